@@ -1,0 +1,34 @@
+// The target table.
+#include "backends/targets.h"
+
+#include "ir/json.h"
+#include "ir/printer.h"
+
+namespace smachac::backends {
+namespace {
+
+std::optional<std::vector<OutputFile>> emitIrText(const ir::Module& m, EmitContext& ctx) {
+  return std::vector<OutputFile>{{"", ir::printModule(m, ctx.sources)}};
+}
+
+std::optional<std::vector<OutputFile>> emitIrJson(const ir::Module& m, EmitContext& ctx) {
+  return std::vector<OutputFile>{{"", ir::moduleToJson(m, ctx.sources)}};
+}
+
+constexpr Target kTargets[] = {
+    {"ir", "the IR in its stable text form", &emitIrText},
+    {"json", "the IR as JSON (format smachac-ir, version 1)", &emitIrJson},
+};
+
+}  // namespace
+
+std::span<const Target> targets() { return kTargets; }
+
+const Target* findTarget(std::string_view name) {
+  for (const Target& t : kTargets) {
+    if (t.name == name) return &t;
+  }
+  return nullptr;
+}
+
+}  // namespace smachac::backends

@@ -1,0 +1,47 @@
+// The output targets of `smachac -target=NAME`: each turns a checked module into files.
+// Text targets (ir, json) print the IR; code targets render templates through the generator.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ir/module.h"
+#include "ir/support/diagnostic_emitter.h"
+#include "ir/support/source_manager.h"
+
+namespace smachac::backends {
+
+struct EmitOptions {
+  std::vector<std::string> template_dirs;  ///< -I, searched before the built-in templates
+  bool comments = false;                   ///< -c
+  bool introspection = false;              ///< -i
+};
+
+/// One generated file. An empty `name` is the file named by -o (or stdout); otherwise a
+/// path relative to the -o directory.
+struct OutputFile {
+  std::string name;
+  std::string content;
+};
+
+struct EmitContext {
+  const SourceManager& sources;
+  DiagnosticEmitter& diags;
+  const EmitOptions& options;
+};
+
+using EmitFn = std::optional<std::vector<OutputFile>> (*)(const ir::Module&, EmitContext&);
+
+struct Target {
+  std::string_view name;
+  std::string_view description;
+  EmitFn emit;
+};
+
+std::span<const Target> targets();
+const Target* findTarget(std::string_view name);
+
+}  // namespace smachac::backends

@@ -1,0 +1,31 @@
+// The frontend's one entry point: a SMACHA script file → ir::Module.
+//
+//   script ::= {name, template, states, outcomes?, userdata?, manifest?, node_name?,
+//               function_name?, params? (ignored, as in SMACHA)}
+//   states ::= [ {NAME: state} ... ]          (nested lists are flattened)
+//   state  ::= container {states, template, ...} | include {script, ...} | leaf {template, ...}
+//
+// Shorthands are expanded at root and state keys; params are inherited and lookups resolved
+// per state in document order (smacha-behaviour.md §2); sub-scripts are included with the
+// caller's overrides; transitions are resolved to siblings or container outcomes. Every error
+// is reported (the walk goes on after one); the module is returned only when there were none.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ir/module.h"
+#include "ir/support/diagnostic_emitter.h"
+#include "ir/support/source_manager.h"
+
+namespace smachac::frontend {
+
+struct FrontendOptions {
+  std::vector<std::string> script_dirs;  ///< -S, searched after the including file's dir
+};
+
+std::optional<ir::Module> lowerScript(const std::string& path, const FrontendOptions& options,
+                                      SourceManager& sources, DiagnosticEmitter& diags);
+
+}  // namespace smachac::frontend

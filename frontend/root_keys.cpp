@@ -1,0 +1,54 @@
+// Script root keys.
+#include "frontend/root_keys.h"
+
+#include <string>
+
+#include "frontend/state_builder.h"
+#include "ir/support/suggest.h"
+
+namespace smachac::frontend {
+namespace {
+
+const std::vector<std::string>& knownRootKeys() {
+  static const std::vector<std::string> keys = {
+      "name",     "template",  "outcomes",      "states",
+      "userdata", "manifest",  "node_name",     "function_name"};
+  return keys;
+}
+
+bool isKnown(const std::string& key) {
+  for (const std::string& k : knownRootKeys()) {
+    if (k == key) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool buildRootState(const ir::Value& root, ir::State& state, DiagnosticEmitter& diags) {
+  state.kind = ir::StateKind::Base;
+  state.loc = root.loc;
+  ir::Value typed = ir::Value::map({}, root.loc);
+  for (const ir::MapEntry& e : root.asMap()) {
+    if (e.key == "params") {
+      diags.emit(DiagKind::RootParamsIgnored, e.key_loc);
+    } else if (e.key == "name") {
+      readName(e.value, "the script's `name`", state.name, diags);
+    } else if (isKnown(e.key)) {
+      typed.asMap().push_back(e);
+    } else {
+      diags.emit(DiagKind::UnknownRootKey, e.key_loc, e.key, didYouMean(e.key, knownRootKeys()));
+    }
+  }
+  buildStateFields(typed, state, "the script", diags);
+  bool complete = true;
+  for (const char* key : {"name", "template", "states"}) {
+    if (!root.find(key)) {
+      diags.emit(DiagKind::MissingKey, SourceLoc{root.loc.file, 0, 0, 1}, "the script", key);
+      complete = false;
+    }
+  }
+  return complete;
+}
+
+}  // namespace smachac::frontend

@@ -1,0 +1,162 @@
+// Typing of core state keys.
+#include "frontend/state_builder.h"
+
+#include <fmt/core.h>
+
+#include <functional>
+
+#include "ir/python_text.h"
+
+namespace smachac::frontend {
+namespace {
+
+using ir::Value;
+
+bool isScalarName(const Value& v) {
+  return v.isString() || v.kind() == ir::ValueKind::Int || v.kind() == ir::ValueKind::Bool;
+}
+
+std::string field(std::string_view key, std::string_view what) {
+  return fmt::format("`{}` of {}", key, what);
+}
+
+void readNameList(const Value& v, std::string_view key, std::string_view what,
+                  std::vector<ir::Name>& out, DiagnosticEmitter& diags) {
+  if (!v.isList()) {
+    diags.emit(DiagKind::InvalidKeyType, v.loc, field(key, what), "a list of names",
+               describeValue(v));
+    return;
+  }
+  for (const Value& item : v.asList()) {
+    ir::Name name;
+    if (readName(item, field(key, what) + " entries", name, diags)) out.push_back(name);
+  }
+}
+
+/// Calls `each(key name, value)` for a mapping, or reports the key as not a mapping.
+bool forEachEntry(const Value& v, std::string_view key, std::string_view what,
+                  std::string_view expected,
+                  const std::function<void(const ir::MapEntry&)>& each,
+                  DiagnosticEmitter& diags) {
+  if (!v.isMap()) {
+    diags.emit(DiagKind::InvalidKeyType, v.loc, field(key, what), expected, describeValue(v));
+    return false;
+  }
+  for (const ir::MapEntry& entry : v.asMap()) each(entry);
+  return true;
+}
+
+ir::Name keyName(const ir::MapEntry& entry) { return {entry.key, entry.key_loc}; }
+
+void readTransitions(const Value& v, std::string_view what, ir::State& state,
+                     DiagnosticEmitter& diags) {
+  forEachEntry(v, "transitions", what, "a mapping from outcome to target",
+               [&](const ir::MapEntry& e) {
+                 ir::Name target;
+                 if (readName(e.value, field("transitions", what) + " targets", target, diags)) {
+                   state.transitions.push_back({keyName(e), target, ir::TargetKind::Unresolved, {}});
+                 }
+               },
+               diags);
+}
+
+void readRemapping(const Value& v, std::string_view what, ir::State& state,
+                   DiagnosticEmitter& diags) {
+  forEachEntry(v, "remapping", what, "a mapping from state key to parent key",
+               [&](const ir::MapEntry& e) {
+                 ir::Name parent;
+                 if (readName(e.value, field("remapping", what) + " values", parent, diags)) {
+                   state.remapping.push_back({keyName(e), parent});
+                 }
+               },
+               diags);
+}
+
+void readArguments(const Value& v, std::string_view key, std::string_view what,
+                   std::vector<ir::Argument>& out, DiagnosticEmitter& diags) {
+  forEachEntry(v, key, what, "a mapping",
+               [&](const ir::MapEntry& e) { out.push_back({keyName(e), e.value}); }, diags);
+}
+
+void readOutcomeMap(const Value& v, std::string_view what, ir::State& state,
+                    DiagnosticEmitter& diags) {
+  std::string inner_what = field("outcome_map", what) + " entries";
+  forEachEntry(v, "outcome_map", what, "a mapping from outcome to {child: outcome}",
+               [&](const ir::MapEntry& e) {
+                 ir::OutcomeMapEntry entry{keyName(e), {}};
+                 if (!e.value.isMap()) {
+                   diags.emit(DiagKind::InvalidKeyType, e.value.loc, inner_what,
+                              "a mapping from child state to its outcome",
+                              describeValue(e.value));
+                   return;
+                 }
+                 for (const ir::MapEntry& c : e.value.asMap()) {
+                   ir::Name outcome;
+                   if (readName(c.value, inner_what, outcome, diags)) {
+                     entry.conditions.push_back({keyName(c), outcome});
+                   }
+                 }
+                 state.outcome_map.push_back(std::move(entry));
+               },
+               diags);
+}
+
+bool readCoreKey(const ir::MapEntry& e, std::string_view what, ir::State& state,
+                 DiagnosticEmitter& diags) {
+  const std::string& key = e.key;
+  const Value& v = e.value;
+  if (key == "template") {
+    ir::Name name;
+    if (readName(v, field(key, what), name, diags)) state.template_name = name;
+  } else if (key == "outcomes") {
+    readNameList(v, key, what, state.outcomes, diags);
+  } else if (key == "input_keys") {
+    readNameList(v, key, what, state.input_keys, diags);
+  } else if (key == "output_keys") {
+    readNameList(v, key, what, state.output_keys, diags);
+  } else if (key == "transitions") {
+    readTransitions(v, what, state, diags);
+  } else if (key == "remapping") {
+    readRemapping(v, what, state, diags);
+  } else if (key == "userdata") {
+    readArguments(v, key, what, state.userdata, diags);
+  } else if (key == "callbacks") {
+    readArguments(v, key, what, state.callbacks, diags);
+  } else if (key == "outcome_map") {
+    readOutcomeMap(v, what, state, diags);
+  } else if (key == "params") {
+    if (v.isMap()) state.params = v;
+    else diags.emit(DiagKind::InvalidKeyType, v.loc, field(key, what), "a mapping", describeValue(v));
+  } else if (key == "default_outcome") {
+    ir::Name name;
+    if (readName(v, field(key, what), name, diags)) state.default_outcome = name;
+  } else {
+    return key == "states" || key == "script";
+  }
+  return true;
+}
+
+}  // namespace
+
+bool readName(const Value& value, std::string_view what, ir::Name& out,
+              DiagnosticEmitter& diags) {
+  if (!isScalarName(value)) {
+    diags.emit(DiagKind::InvalidKeyType, value.loc, what, "a name", describeValue(value));
+    return false;
+  }
+  out = {value.isString() ? value.asString() : ir::pythonStr(value), value.loc};
+  if (out.text.empty()) {
+    diags.emit(DiagKind::EmptyName, value.loc, what);
+    return false;
+  }
+  return true;
+}
+
+void buildStateFields(const Value& vars, ir::State& state, std::string_view what,
+                      DiagnosticEmitter& diags) {
+  for (const ir::MapEntry& e : vars.asMap()) {
+    if (!readCoreKey(e, what, state, diags)) state.args.push_back({keyName(e), e.value});
+  }
+}
+
+}  // namespace smachac::frontend

@@ -1,0 +1,85 @@
+// Sub-script resolution, loading and shape checks.
+#include "frontend/sub_scripts.h"
+
+#include <fmt/core.h>
+
+#include <filesystem>
+
+#include "frontend/yaml_loader.h"
+
+namespace smachac::frontend {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string joinPath(const std::string& dir, const std::string& name) {
+  if (dir.empty()) return fs::path(name).lexically_normal().string();
+  return (fs::path(dir) / name).lexically_normal().string();
+}
+
+bool isRegularFile(const std::string& path) {
+  std::error_code ec;
+  return fs::is_regular_file(path, ec);
+}
+
+}  // namespace
+
+std::vector<std::string> SubScriptLoader::candidates(const ir::Name& script) const {
+  std::vector<std::string> names{script.text};
+  if (!script.text.ends_with(".yml")) names.push_back(script.text + ".yml");
+  std::vector<std::string> paths;
+  if (fs::path(script.text).is_absolute()) {
+    for (const std::string& n : names) paths.push_back(n);
+    return paths;
+  }
+  std::vector<std::string> dirs;
+  dirs.push_back(fs::path(sources_.path(script.loc.file)).parent_path().string());
+  dirs.insert(dirs.end(), search_dirs_.begin(), search_dirs_.end());
+  for (const std::string& dir : dirs) {
+    for (const std::string& n : names) paths.push_back(joinPath(dir, n));
+  }
+  return paths;
+}
+
+std::optional<SubScriptState> SubScriptLoader::load(const ir::Name& script) {
+  std::vector<std::string> tried = candidates(script);
+  for (const std::string& path : tried) {
+    if (!isRegularFile(path)) continue;
+    std::error_code ec;
+    std::string canonical = fs::weakly_canonical(path, ec).string();
+    auto it = cache_.find(canonical);
+    if (it == cache_.end()) {
+      LoadedYaml loaded = loadYamlFile(path, script.loc, sources_, diags_);
+      if (loaded.file != 0) files_.push_back(loaded.file);
+      it = cache_.emplace(canonical, Cached{loaded.file, std::move(loaded.root)}).first;
+    }
+    if (!it->second.root) return std::nullopt;
+    std::optional<SubScriptState> state = validate(script, it->second.file, *it->second.root);
+    if (state) state->canonical_path = canonical;
+    return state;
+  }
+  diags_.emit(DiagKind::SubScriptNotFound, script.loc, script.text);
+  for (const std::string& path : tried) diags_.note({}, fmt::format("looked for `{}`", path));
+  return std::nullopt;
+}
+
+std::optional<SubScriptState> SubScriptLoader::validate(const ir::Name& script, uint32_t file,
+                                                        const ir::Value& root) {
+  std::string found = describeValue(root);
+  if (root.isList() && root.asList().size() != 1) {
+    found = fmt::format("a list of {} entries", root.asList().size());
+  } else if (root.isList() && (!root.asList()[0].isMap() || root.asList()[0].asMap().size() != 1)) {
+    found = fmt::format("a list holding {}", describeValue(root.asList()[0]));
+    if (root.asList()[0].isMap()) {
+      found = fmt::format("a list holding a mapping of {} keys", root.asList()[0].asMap().size());
+    }
+  } else if (root.isList()) {
+    return SubScriptState{file, {}, root.asList()[0].asMap()[0]};
+  }
+  SourceLoc where = root.loc.hasFile() ? root.loc : SourceLoc{file, 1, 1, 1};
+  diags_.emit(DiagKind::SubScriptNotOneState, where, sources_.path(file), found);
+  diags_.note(script.loc, "included from here");
+  return std::nullopt;
+}
+
+}  // namespace smachac::frontend

@@ -1,0 +1,64 @@
+// Module: the state store and tree navigation.
+#include "ir/module.h"
+
+#include "ir/support/check.h"
+
+namespace smachac::ir {
+
+const Argument* State::findArg(std::string_view key) const {
+  for (const Argument& arg : args) {
+    if (arg.key.text == key) return &arg;
+  }
+  return nullptr;
+}
+
+StateId Module::addState(State state) {
+  states_.push_back(std::move(state));
+  return StateId(static_cast<uint32_t>(states_.size() - 1));
+}
+
+State& Module::state(StateId id) {
+  SMACHAC_CHECK(id.valid() && id.index < states_.size(), "dangling StateId");
+  return states_[id.index];
+}
+
+const State& Module::state(StateId id) const {
+  SMACHAC_CHECK(id.valid() && id.index < states_.size(), "dangling StateId");
+  return states_[id.index];
+}
+
+void Module::adopt(StateId parent, StateId child) {
+  state(parent).children.push_back(child);
+  state(child).parent = parent;
+}
+
+StateId Module::findChild(StateId container, std::string_view name) const {
+  for (StateId child : state(container).children) {
+    if (state(child).name.text == name) return child;
+  }
+  return StateId();
+}
+
+std::string Module::path(StateId id) const {
+  std::string result = state(id).name.text;
+  for (StateId p = state(id).parent; p.valid(); p = state(p).parent) {
+    result = state(p).name.text + "/" + result;
+  }
+  return result;
+}
+
+std::vector<StateId> Module::preorder() const {
+  std::vector<StateId> order;
+  if (!root_.valid()) return order;
+  std::vector<StateId> stack{root_};
+  while (!stack.empty()) {
+    StateId id = stack.back();
+    stack.pop_back();
+    order.push_back(id);
+    const std::vector<StateId>& children = state(id).children;
+    for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(*it);
+  }
+  return order;
+}
+
+}  // namespace smachac::ir

@@ -1,0 +1,45 @@
+// ir::Module owns a compiled script: every state in one store addressed by StateId, the root
+// (a Base state), and the files the script was read from (ids into the SourceManager).
+#pragma once
+
+#include <deque>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "ir/ids.h"
+#include "ir/state.h"
+
+namespace smachac::ir {
+
+class Module {
+ public:
+  StateId addState(State state);
+  State& state(StateId id);
+  const State& state(StateId id) const;
+  size_t stateCount() const { return states_.size(); }
+
+  StateId root() const { return root_; }
+  void setRoot(StateId id) { root_ = id; }
+
+  /// Appends `child` to `parent`'s children and sets its parent.
+  void adopt(StateId parent, StateId child);
+  /// The child of `container` named `name`, or an invalid id.
+  StateId findChild(StateId container, std::string_view name) const;
+  /// Names from the root to `id`, joined by '/': "ROOT/SUB/FOO".
+  std::string path(StateId id) const;
+
+  /// States in document order (pre-order from the root); detached states are skipped.
+  std::vector<StateId> preorder() const;
+
+  /// The main script's file id, then every sub-script file, in first-read order.
+  std::vector<uint32_t>& files() { return files_; }
+  const std::vector<uint32_t>& files() const { return files_; }
+
+ private:
+  std::deque<State> states_;
+  StateId root_;
+  std::vector<uint32_t> files_;
+};
+
+}  // namespace smachac::ir

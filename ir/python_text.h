@@ -1,0 +1,17 @@
+// Python's str() and repr() of IR values, as SMACHA's string constructs and templates print
+// them: True/False/None, floats via repr, lists and dicts in repr form with quoted strings.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "ir/value.h"
+
+namespace smachac::ir {
+
+std::string pythonStr(const Value& value);
+std::string pythonRepr(const Value& value);
+/// Python's repr of a str: single quotes unless it contains ' and no ".
+std::string pythonStringRepr(std::string_view text);
+
+}  // namespace smachac::ir

@@ -1,0 +1,20 @@
+// DiagnosticEmitter: severity resolution and collection.
+#include "ir/support/diagnostic_emitter.h"
+
+namespace smachac {
+
+void DiagnosticEmitter::report(DiagKind kind, SourceLoc loc, std::string message) {
+  Severity severity = options_.severityOf(kind);
+  last_dropped_ = severity == Severity::Ignored;
+  if (last_dropped_) return;
+  if (severity == Severity::Error) ++error_count_;
+  if (severity == Severity::Warning) ++warning_count_;
+  diagnostics_.push_back({kind, severity, loc, std::move(message), {}});
+}
+
+void DiagnosticEmitter::note(SourceLoc loc, std::string message) {
+  if (last_dropped_ || diagnostics_.empty()) return;
+  diagnostics_.back().notes.push_back({loc, std::move(message)});
+}
+
+}  // namespace smachac

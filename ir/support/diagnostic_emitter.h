@@ -1,0 +1,46 @@
+// The one channel for problems in the user's input. Checks call emit() with a kind from
+// diagnostic_kinds.def and the arguments of its message; the emitter applies -W options and
+// collects the diagnostics for a DiagnosticPrinter.
+#pragma once
+
+#include <fmt/core.h>
+
+#include <string>
+#include <vector>
+
+#include "ir/support/diagnostic.h"
+#include "ir/support/warning_options.h"
+
+namespace smachac {
+
+class DiagnosticEmitter {
+ public:
+  explicit DiagnosticEmitter(WarningOptions options = {}) : options_(std::move(options)) {}
+
+  template <typename... Args>
+  void emit(DiagKind kind, SourceLoc loc, const Args&... args) {
+    report(kind, loc,
+           fmt::vformat(fmt::string_view(diagKindInfo(kind).format.data(),
+                                         diagKindInfo(kind).format.size()),
+                        fmt::make_format_args(args...)));
+  }
+
+  /// Attaches a note to the diagnostic emitted last (dropped if that one was silenced).
+  void note(SourceLoc loc, std::string message);
+
+  bool hasErrors() const { return error_count_ > 0; }
+  size_t errorCount() const { return error_count_; }
+  size_t warningCount() const { return warning_count_; }
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+ private:
+  void report(DiagKind kind, SourceLoc loc, std::string message);
+
+  WarningOptions options_;
+  std::vector<Diagnostic> diagnostics_;
+  bool last_dropped_ = false;
+  size_t error_count_ = 0;
+  size_t warning_count_ = 0;
+};
+
+}  // namespace smachac

@@ -1,0 +1,22 @@
+// "Did you mean" suggestions: the closest candidate by edit distance, if close enough.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace smachac {
+
+/// Levenshtein distance, byte-wise.
+size_t editDistance(std::string_view a, std::string_view b);
+
+/// The candidate closest to `word` when it is within about a third of the word's length
+/// (at least 1, at most 3 edits); ties go to the earliest candidate. Never `word` itself.
+std::optional<std::string> closestMatch(std::string_view word,
+                                        std::span<const std::string> candidates);
+
+/// "; did you mean `x`?" or "" — the suffix used by diagnostic messages.
+std::string didYouMean(std::string_view word, std::span<const std::string> candidates);
+
+}  // namespace smachac

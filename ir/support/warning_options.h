@@ -1,0 +1,34 @@
+// -W flags: which diagnostics are reported and at which severity.
+//   -Werror             every warning is an error
+//   -W<kind>            enable a warning (also one that is off by default)
+//   -Wno-<kind>         silence a warning
+//   -Werror=<kind>      that warning is an error
+//   -Wno-error=<kind>   that warning stays a warning under -Werror; an adjustable error
+//                       becomes a warning
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ir/support/diagnostic.h"
+
+namespace smachac {
+
+class WarningOptions {
+ public:
+  /// Applies one flag (with its leading "-W"). Returns an error message for an unknown flag.
+  std::optional<std::string> apply(std::string_view flag);
+
+  /// The severity a diagnostic of `kind` is reported with (Ignored: not reported).
+  Severity severityOf(DiagKind kind) const;
+
+ private:
+  enum class Setting { Enable, Disable, AsError, NotAsError };
+  bool all_errors_ = false;
+  std::map<DiagKind, std::vector<Setting>> settings_;
+};
+
+}  // namespace smachac

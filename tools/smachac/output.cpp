@@ -1,0 +1,58 @@
+// Atomic file output.
+#include "tools/smachac/output.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+namespace smachac::driver {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string errnoText() { return std::strerror(errno); }
+
+std::optional<std::string> writeAll(int fd, const std::string& content) {
+  size_t written = 0;
+  while (written < content.size()) {
+    ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errnoText();
+    written += static_cast<size_t>(n);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> writeFileAtomically(const std::string& path,
+                                               const std::string& content) {
+  if (path == "-") {
+    std::fwrite(content.data(), 1, content.size(), stdout);
+    std::fflush(stdout);
+    return std::nullopt;
+  }
+  fs::path target(path);
+  fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::string pattern = (dir / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
+  int fd = ::mkstemp(pattern.data());
+  if (fd < 0) return "cannot create a file in `" + dir.string() + "`: " + errnoText();
+  std::optional<std::string> error = writeAll(fd, content);
+  mode_t mask = ::umask(0);
+  ::umask(mask);
+  if (::fchmod(fd, 0666 & ~mask) != 0 && !error) error = errnoText();
+  if (::close(fd) != 0 && !error) error = errnoText();
+  if (!error && ::rename(pattern.c_str(), path.c_str()) != 0) error = errnoText();
+  if (error) {
+    ::unlink(pattern.c_str());
+    return "cannot write `" + path + "`: " + *error;
+  }
+  return std::nullopt;
+}
+
+}  // namespace smachac::driver

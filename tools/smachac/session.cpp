@@ -1,0 +1,90 @@
+// Shared driver plumbing: options, diagnostics and the compile pipeline of one script.
+#include "tools/smachac/session.h"
+
+#include <fmt/core.h>
+
+#include <iostream>
+
+#include "frontend/lower.h"
+#include "ir/printer.h"
+#include "passes/pipeline.h"
+
+namespace smachac::driver {
+
+void addCommonOptions(CLI::App& app, CommonOptions& o) {
+  app.add_option("-I,--template-dir", o.template_dirs,
+                 "template search directory, before the built-ins (repeatable)");
+  app.add_option("-S,--script-dir", o.script_dirs,
+                 "sub-script search directory, after the including file's (repeatable)");
+  app.add_option("--fdiagnostics-format", o.diagnostics_format,
+                 "diagnostics as text, json or sarif")
+      ->check(CLI::IsMember({"text", "json", "sarif"}));
+  app.add_option("--disable-pass", o.disabled_passes, "do not run this pass (repeatable)");
+  app.add_option("--print-ir-after", o.print_ir_after,
+                 "print the IR to stderr after this pass (or `all`)");
+  app.add_flag("--list-passes", o.list_passes, "list the passes and exit");
+}
+
+std::optional<std::string> Session::configure(const std::vector<std::string>& warning_flags,
+                                              const CommonOptions& options) {
+  options_ = options;
+  WarningOptions warnings;
+  for (const std::string& flag : warning_flags) {
+    if (std::optional<std::string> error = warnings.apply(flag)) return error;
+  }
+  diags_ = std::make_unique<DiagnosticEmitter>(std::move(warnings));
+  format_ = *parseDiagnosticFormat(options.diagnostics_format);
+  for (const std::string& name : options.disabled_passes) {
+    if (!passes::findPass(name)) return fmt::format("unknown pass `{}` in -disable-pass", name);
+  }
+  const std::string& after = options.print_ir_after;
+  if (!after.empty() && after != "all" && !passes::findPass(after)) {
+    return fmt::format("unknown pass `{}` in -print-ir-after", after);
+  }
+  return std::nullopt;
+}
+
+std::optional<ir::Module> Session::compile(const std::string& path) {
+  frontend::FrontendOptions frontend_options{options_.script_dirs};
+  std::optional<ir::Module> module = frontend::lowerScript(path, frontend_options, sources_, *diags_);
+  if (!module) return std::nullopt;
+  passes::PassContext context{sources_, *diags_, options_.target};
+  passes::PipelineOptions pipeline;
+  pipeline.disabled.insert(options_.disabled_passes.begin(), options_.disabled_passes.end());
+  pipeline.print_ir_after = options_.print_ir_after;
+  pipeline.print_ir = [this](std::string_view pass, const ir::Module& m) {
+    std::cerr << "; IR after " << pass << "\n" << ir::printModule(m, sources_);
+  };
+  if (!passes::runPipeline(*module, context, pipeline)) return std::nullopt;
+  return module;
+}
+
+void Session::printDiagnostics() const {
+  std::cerr.flush();
+  smachac::printDiagnostics(std::cerr, diags_->diagnostics(), sources_, format_);
+}
+
+std::optional<int> parseArgs(CLI::App& app, const Args& args) {
+  std::vector<std::string> reversed(args.rbegin(), args.rend());
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kExitUsageError;
+  }
+  return std::nullopt;
+}
+
+void printPassList() {
+  for (const passes::PassInfo& pass : passes::passTable()) {
+    std::cout << fmt::format("{:<28} {:<9} {}\n", pass.name,
+                             pass.kind == passes::PassKind::Check ? "check" : "transform",
+                             pass.description);
+  }
+}
+
+}  // namespace smachac::driver

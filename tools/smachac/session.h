@@ -1,0 +1,63 @@
+// What every command shares: the options common to compile and lint (-I, -S, -W,
+// -fdiagnostics-format, pass flags), the source manager and the diagnostic emitter, and the
+// compile of one script up to a checked module.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ir/module.h"
+#include "ir/support/diagnostic_emitter.h"
+#include "ir/support/diagnostic_printer.h"
+#include "ir/support/source_manager.h"
+#include "tools/smachac/commands.h"
+
+namespace smachac::driver {
+
+struct CommonOptions {
+  std::vector<std::string> template_dirs;
+  std::vector<std::string> script_dirs;
+  std::string diagnostics_format = "text";
+  std::string target = "smach";
+  std::vector<std::string> disabled_passes;
+  std::string print_ir_after;
+  bool list_passes = false;
+};
+
+/// Registers the common options on a CLI11 app.
+void addCommonOptions(CLI::App& app, CommonOptions& options);
+
+class Session {
+ public:
+  /// Applies -W flags; returns an error message for an unknown one.
+  std::optional<std::string> configure(const std::vector<std::string>& warning_flags,
+                                       const CommonOptions& options);
+
+  /// Frontend + passes for one script; nullopt when it has errors.
+  std::optional<ir::Module> compile(const std::string& path);
+
+  /// Prints the diagnostics collected so far to stderr.
+  void printDiagnostics() const;
+
+  SourceManager& sources() { return sources_; }
+  DiagnosticEmitter& diags() { return *diags_; }
+  const CommonOptions& options() const { return options_; }
+
+ private:
+  CommonOptions options_;
+  DiagnosticFormat format_ = DiagnosticFormat::Text;
+  SourceManager sources_;
+  std::unique_ptr<DiagnosticEmitter> diags_ = std::make_unique<DiagnosticEmitter>();
+};
+
+/// Parses `args` with `app`; on failure prints CLI11's message and returns the exit code.
+std::optional<int> parseArgs(CLI::App& app, const Args& args);
+
+/// Prints the pass table (for -list-passes).
+void printPassList();
+
+}  // namespace smachac::driver

@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include "frontend/scalar.h"
 #include "ir/python_text.h"
 
 namespace smachac::frontend {
@@ -114,7 +115,7 @@ class Resolver {
       text += ir::pythonStr(lookup.value);
       had_lookup = true;
     }
-    if (had_lookup) value = Value::string(std::move(text), value.loc);
+    if (had_lookup) value = textValue(text, value.loc);
   }
 
   Value& vars_;

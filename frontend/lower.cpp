@@ -17,7 +17,7 @@ namespace {
 using ir::StateId;
 using ir::Value;
 
-constexpr size_t kMaxContainerDepth = 256;
+constexpr size_t kMaxContainerDepth = 100;
 constexpr size_t kMaxIncludeDepth = 64;
 
 /// What a level of the script (the root or a container's children) passes to its states.

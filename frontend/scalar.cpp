@@ -84,14 +84,14 @@ std::optional<double> parseFloat(std::string_view s) {
   return v;
 }
 
-ir::Value stringOrExpression(std::string_view text, SourceLoc loc) {
+}  // namespace
+
+ir::Value textValue(std::string_view text, SourceLoc loc) {
   if (text.size() >= 2 && text.front() == '`' && text.back() == '`') {
     return ir::Value::expression(std::string(text.substr(1, text.size() - 2)), loc);
   }
   return ir::Value::string(std::string(text), loc);
 }
-
-}  // namespace
 
 ScalarResult resolveScalar(std::string_view text, ScalarStyle style, std::string_view tag,
                            SourceLoc loc) {
@@ -100,7 +100,7 @@ ScalarResult resolveScalar(std::string_view text, ScalarStyle style, std::string
     v.forced_string = true;
     return {std::move(v)};
   }
-  if (style == ScalarStyle::Quoted) return {stringOrExpression(text, loc)};
+  if (style == ScalarStyle::Quoted) return {textValue(text, loc)};
   if (text.empty() || text == "~" || text == "null" || text == "Null" || text == "NULL") {
     return {ir::Value::null(loc)};
   }
@@ -110,7 +110,7 @@ ScalarResult resolveScalar(std::string_view text, ScalarStyle style, std::string
   }
   if (std::optional<ScalarResult> i = parseInt(text, loc)) return std::move(*i);
   if (std::optional<double> f = parseFloat(text)) return {ir::Value::real(*f, loc)};
-  return {stringOrExpression(text, loc)};
+  return {textValue(text, loc)};
 }
 
 }  // namespace smachac::frontend

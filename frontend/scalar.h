@@ -19,6 +19,9 @@ struct ScalarResult {
   bool int_overflow = false;  ///< an integer that does not fit in int64 (value holds 0)
 };
 
+/// A string value, or an expression when the text is in backticks (`code`).
+ir::Value textValue(std::string_view text, SourceLoc loc);
+
 ScalarResult resolveScalar(std::string_view text, ScalarStyle style, std::string_view tag,
                            SourceLoc loc);
 

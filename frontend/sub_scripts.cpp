@@ -17,6 +17,16 @@ std::string joinPath(const std::string& dir, const std::string& name) {
   return (fs::path(dir) / name).lexically_normal().string();
 }
 
+/// True when `name` climbs out of its directory (`../x`) and `canonical` is outside `dir`.
+bool climbsOut(const std::string& name, const std::string& dir, const std::string& canonical) {
+  bool has_parent_step = false;
+  for (const fs::path& part : fs::path(name)) has_parent_step = has_parent_step || part == "..";
+  if (!has_parent_step) return false;
+  std::error_code ec;
+  std::string base = fs::weakly_canonical(dir.empty() ? "." : dir, ec).string();
+  return !canonical.starts_with(base + "/");
+}
+
 bool isRegularFile(const std::string& path) {
   std::error_code ec;
   return fs::is_regular_file(path, ec);
@@ -53,7 +63,14 @@ std::optional<SubScriptState> SubScriptLoader::load(const ir::Name& script) {
       if (loaded.file != 0) files_.push_back(loaded.file);
       it = cache_.emplace(canonical, Cached{loaded.file, std::move(loaded.root)}).first;
     }
-    if (!it->second.root) return std::nullopt;
+    if (!it->second.root) {
+      diags_.note(script.loc, "included from here");
+      return std::nullopt;
+    }
+    std::string dir = fs::path(sources_.path(script.loc.file)).parent_path().string();
+    if (climbsOut(script.text, dir, canonical)) {
+      diags_.emit(DiagKind::SubScriptOutsideDir, script.loc, script.text, path);
+    }
     std::optional<SubScriptState> state = validate(script, it->second.file, *it->second.root);
     if (state) state->canonical_path = canonical;
     return state;

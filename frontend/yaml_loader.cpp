@@ -2,6 +2,7 @@
 #include "frontend/yaml_loader.h"
 
 #include <fmt/core.h>
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
@@ -9,7 +10,7 @@
 #include <sstream>
 
 #include "frontend/scalar.h"
-#include "frontend/utf8.h"
+#include "ir/support/utf8.h"
 
 namespace smachac::frontend {
 namespace {
@@ -87,6 +88,7 @@ class Converter {
       }
       ir::Value v = value(pair.second, depth + 1);
       if (aborted_) break;
+      if (pair.second.IsNull() && pair.second.Scalar().empty()) v.loc = key_loc;
       entries.push_back({std::move(text), key_loc, std::move(v)});
     }
     return ir::Value::map(std::move(entries), loc(node.Mark()));
@@ -166,6 +168,12 @@ std::optional<ir::Value> parseYaml(uint32_t file, const SourceManager& sources,
   YAML::Node root;
   try {
     root = YAML::Load(std::string(text));
+  } catch (const YAML::DeepRecursion& e) {
+    diags.emit(DiagKind::YamlTooComplex,
+               SourceLoc{file, static_cast<uint32_t>(std::max(e.mark.line, 0) + 1),
+                         static_cast<uint32_t>(std::max(e.mark.column, 0) + 1), 1},
+               "YAML nested too deeply for the parser");
+    return std::nullopt;
   } catch (const YAML::Exception& e) {
     SourceLoc l{file, static_cast<uint32_t>(std::max(e.mark.line, 0) + 1),
                 static_cast<uint32_t>(std::max(e.mark.column, 0) + 1), 1};

@@ -15,7 +15,7 @@
 namespace smachac::frontend {
 
 inline constexpr size_t kMaxScriptBytes = 32u << 20;
-inline constexpr size_t kMaxYamlDepth = 512;
+inline constexpr size_t kMaxYamlDepth = 1000;  ///< yaml-cpp itself stops at 2000
 inline constexpr size_t kMaxYamlNodes = 4'000'000;
 
 struct LoadedYaml {

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ir/support/utf8.h"
 #include "ir/support/version.h"
 
 namespace smachac {
@@ -19,6 +20,26 @@ std::string locationPrefix(SourceLoc loc, const SourceManager& sources) {
   const std::string& path = sources.path(loc.file);
   if (!loc.hasLine()) return path;
   return fmt::format("{}:{}:{}", path, loc.line, loc.column);
+}
+
+constexpr size_t kSnippetWidth = 120;  ///< longer lines are shown as a window around the caret
+
+/// The line as it is shown: control characters and invalid UTF-8 bytes as '?', so that
+/// diagnostics are always printable text.
+std::string printable(std::string_view line) {
+  std::string out;
+  for (size_t i = 0; i < line.size();) {
+    size_t length = utf8SequenceLength(line, i);
+    unsigned char c = static_cast<unsigned char>(line[i]);
+    if (length == 0 || (c < 0x20 && c != '\t') || c == 0x7f) {
+      out += '?';
+      i += 1;
+    } else {
+      out.append(line, i, length);
+      i += length;
+    }
+  }
+  return out;
 }
 
 /// Spaces (tabs kept as tabs) that move a caret under byte `bytes` of a UTF-8 line.
@@ -38,14 +59,27 @@ size_t codePoints(std::string_view text) {
   return count;
 }
 
+/// Cuts a long line to a window around byte `column`; adjusts `column` to the window.
+std::string windowAround(std::string line, size_t& column) {
+  if (line.size() <= kSnippetWidth) return line;
+  size_t start = column > kSnippetWidth / 2 ? column - kSnippetWidth / 2 : 0;
+  while (start > 0 && (static_cast<unsigned char>(line[start]) & 0xC0) == 0x80) --start;
+  size_t end = std::min(line.size(), start + kSnippetWidth);
+  while (end < line.size() && (static_cast<unsigned char>(line[end]) & 0xC0) == 0x80) ++end;
+  std::string window = (start > 0 ? "..." : "") + line.substr(start, end - start) +
+                       (end < line.size() ? "..." : "");
+  column = column - start + (start > 0 ? 3 : 0);
+  return window;
+}
+
 void appendSnippet(std::string& out, SourceLoc loc, const SourceManager& sources) {
   if (!loc.hasFile() || !loc.hasLine()) return;
-  std::string_view line = sources.lineText(loc.file, loc.line);
-  size_t column_bytes = loc.column > 0 ? loc.column - 1 : 0;
+  size_t column = loc.column > 0 ? loc.column - 1 : 0;
+  std::string line = windowAround(printable(sources.lineText(loc.file, loc.line)), column);
   out += line;
   out += '\n';
-  out += caretPadding(line, column_bytes);
-  size_t rest = column_bytes < line.size() ? codePoints(line.substr(column_bytes)) : 1;
+  out += caretPadding(line, column);
+  size_t rest = column < line.size() ? codePoints(std::string_view(line).substr(column)) : 1;
   size_t length = std::clamp<size_t>(loc.length, 1, std::max<size_t>(rest, 1));
   out += '^';
   out.append(length - 1, '~');
@@ -110,7 +144,11 @@ Json sarifResult(const Diagnostic& d, const SourceManager& sources) {
 
 Json sarifLog(std::span<const Diagnostic> diagnostics, const SourceManager& sources) {
   Json rules = Json::array();
-  for (DiagKind kind : allDiagKinds()) {
+  std::vector<DiagKind> used;
+  for (const Diagnostic& d : diagnostics) {
+    if (std::find(used.begin(), used.end(), d.kind) == used.end()) used.push_back(d.kind);
+  }
+  for (DiagKind kind : used) {
     const DiagKindInfo& info = diagKindInfo(kind);
     Json rule = {{"id", info.name}, {"name", info.name}};
     rule["defaultConfiguration"] = {
@@ -142,7 +180,8 @@ std::string formatDiagnosticText(const Diagnostic& d, const SourceManager& sourc
                                 severityName(d.severity), d.message, diagKindInfo(d.kind).name);
   appendSnippet(out, d.loc, sources);
   for (const DiagNote& n : d.notes) {
-    out += fmt::format("{}: note: {}\n", locationPrefix(n.loc, sources), n.message);
+    std::string prefix = n.loc.hasFile() ? locationPrefix(n.loc, sources) + ": " : "";
+    out += fmt::format("{}note: {}\n", prefix, n.message);
     appendSnippet(out, n.loc, sources);
   }
   return out;

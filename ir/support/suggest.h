@@ -8,7 +8,7 @@
 
 namespace smachac {
 
-/// Levenshtein distance, byte-wise.
+/// Edit distance (insert, delete, substitute, swap adjacent), byte-wise.
 size_t editDistance(std::string_view a, std::string_view b);
 
 /// The candidate closest to `word` when it is within about a third of the word's length

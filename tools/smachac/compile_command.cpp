@@ -95,11 +95,6 @@ int runCompile(const Args& raw_args) {
     }
     return kExitOk;
   }
-  const backends::Target* target = backends::findTarget(o.common.target);
-  if (!target) {
-    return usageError(fmt::format("unknown target `{}`; available: {}", o.common.target,
-                                  targetNames()));
-  }
   if (o.inputs.empty()) return usageError("no input script (see `smachac --help`)");
   Session session;
   if (std::optional<std::string> error = session.configure(warning_flags, o.common)) {
@@ -107,6 +102,11 @@ int runCompile(const Args& raw_args) {
   }
   if (o.syntax_only) return checkOnly(session, o.inputs);
   if (o.inputs.size() > 1) return usageError("one script at a time, unless -fsyntax-only");
+  const backends::Target* target = backends::findTarget(o.common.target);
+  if (!target) {
+    return usageError(fmt::format("unknown target `{}`; available: {}", o.common.target,
+                                  targetNames()));
+  }
   return emit(session, o, *target);
 }
 

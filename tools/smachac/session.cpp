@@ -13,13 +13,16 @@ namespace smachac::driver {
 
 void addCommonOptions(CLI::App& app, CommonOptions& o) {
   app.add_option("-I,--template-dir", o.template_dirs,
-                 "template search directory, before the built-ins (repeatable)");
+                 "template search directory, before the built-ins (repeatable)")
+      ->allow_extra_args(false);
   app.add_option("-S,--script-dir", o.script_dirs,
-                 "sub-script search directory, after the including file's (repeatable)");
+                 "sub-script search directory, after the including file's (repeatable)")
+      ->allow_extra_args(false);
   app.add_option("--fdiagnostics-format", o.diagnostics_format,
                  "diagnostics as text, json or sarif")
       ->check(CLI::IsMember({"text", "json", "sarif"}));
-  app.add_option("--disable-pass", o.disabled_passes, "do not run this pass (repeatable)");
+  app.add_option("--disable-pass", o.disabled_passes, "do not run this pass (repeatable)")
+      ->allow_extra_args(false);
   app.add_option("--print-ir-after", o.print_ir_after,
                  "print the IR to stderr after this pass (or `all`)");
   app.add_flag("--list-passes", o.list_passes, "list the passes and exit");

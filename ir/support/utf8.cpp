@@ -1,13 +1,10 @@
 // UTF-8 validation.
-#include "frontend/utf8.h"
+#include "ir/support/utf8.h"
 
 #include <cstdint>
 
-namespace smachac::frontend {
-namespace {
-
-/// Length of the valid sequence starting at `i`, or 0.
-size_t sequenceLength(std::string_view text, size_t i) {
+namespace smachac {
+size_t utf8SequenceLength(std::string_view text, size_t i) {
   auto byte = [&](size_t k) { return static_cast<uint8_t>(text[k]); };
   uint8_t lead = byte(i);
   if (lead == 0) return 0;
@@ -25,15 +22,13 @@ size_t sequenceLength(std::string_view text, size_t i) {
   return length;
 }
 
-}  // namespace
-
 std::optional<size_t> findInvalidUtf8(std::string_view text) {
   for (size_t i = 0; i < text.size();) {
-    size_t length = sequenceLength(text, i);
+    size_t length = utf8SequenceLength(text, i);
     if (length == 0) return i;
     i += length;
   }
   return std::nullopt;
 }
 
-}  // namespace smachac::frontend
+}  // namespace smachac

@@ -1,0 +1,148 @@
+"""The smachac driver as a user runs it: exit codes, atomic output, limits, determinism."""
+import json
+import os
+import subprocess
+import tempfile
+import unittest
+
+SMACHAC = os.environ["SMACHAC"]
+ROOT = os.environ["SMACHAC_ROOT"]
+EXAMPLES = os.path.join(ROOT, "examples", "core")
+VALID = "name: t\ntemplate: Base\noutcomes: [done]\nstates:\n  - A: {template: S, transitions: {x: done}}\n"
+
+
+def run(*args, cwd=None, env=None):
+    return subprocess.run([SMACHAC, *args], capture_output=True, text=True, cwd=cwd, env=env,
+                          timeout=120)
+
+
+class TempDirTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def write(self, name, text):
+        path = os.path.join(self.dir, name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+
+class ExitCodes(TempDirTest):
+    def test_success_writes_output_file(self):
+        script = self.write("ok.yml", VALID)
+        out = os.path.join(self.dir, "ok.ir")
+        r = run("-target=ir", script, "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(r.stdout, "")
+        with open(out) as f:
+            self.assertTrue(f.read().startswith("base t template=Base @1:1\n"))
+
+    def test_double_dash_spelling(self):
+        script = self.write("ok.yml", VALID)
+        self.assertEqual(run("--target=ir", script).stdout, run("-target=ir", script).stdout)
+
+    def test_usage_errors_exit_2(self):
+        script = self.write("ok.yml", VALID)
+        self.assertEqual(run("-target=nope", script).returncode, 2)
+        self.assertEqual(run("--no-such-option", script).returncode, 2)
+        self.assertEqual(run("-target=ir").returncode, 2)
+        r = run("-target=ir", script, "-o", os.path.join(self.dir, "missing_dir", "x.ir"))
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("cannot create a file in", r.stderr)
+
+    def test_version_and_help(self):
+        r = run("--version")
+        self.assertEqual((r.returncode, r.stdout.strip()), (0, "smachac 0.1.0"))
+        r = run("--help")
+        self.assertEqual(r.returncode, 0)
+        self.assertIn("-target", r.stdout.replace("--target", "-target"))
+
+
+class AtomicOutput(TempDirTest):
+    def test_failure_leaves_existing_file_untouched(self):
+        out = self.write("out.ir", "previous contents\n")
+        bad = self.write("bad.yml", "name: t\ntemplate: Base\nstates: [A: {outcomes: x}]\n")
+        r = run("-target=ir", bad, "-o", out)
+        self.assertEqual(r.returncode, 1)
+        with open(out) as f:
+            self.assertEqual(f.read(), "previous contents\n")
+        self.assertEqual(sorted(os.listdir(self.dir)), ["bad.yml", "out.ir"])
+
+    def test_failure_creates_no_file(self):
+        bad = self.write("bad.yml", "states: [\n")
+        out = os.path.join(self.dir, "new.ir")
+        self.assertEqual(run("-target=ir", bad, "-o", out).returncode, 1)
+        self.assertFalse(os.path.exists(out))
+        self.assertEqual(os.listdir(self.dir), ["bad.yml"])
+
+
+class Limits(TempDirTest):
+    def test_script_too_large(self):
+        path = os.path.join(self.dir, "huge.yml")
+        with open(path, "w") as f:
+            f.write("name: t\n")
+            f.truncate(33 * 1024 * 1024)
+        r = run("-target=ir", path)
+        self.assertEqual(r.returncode, 1)
+        self.assertEqual(r.stderr, f"smachac: error: `{path}` is 34603008 bytes; scripts are "
+                                   "limited to 33554432 bytes [file-too-large]\n")
+
+    def test_include_chain_too_deep(self):
+        for i in range(70):
+            self.write(f"s{i}.yml", f"- X:\n    template: StateMachine\n    outcomes: [done]\n"
+                                    f"    states:\n      - N: {{script: s{i + 1}}}\n")
+        main = self.write("main.yml", "name: t\ntemplate: Base\nstates:\n  - A: {script: s0}\n")
+        r = run("-target=ir", "main.yml", cwd=self.dir)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("s63.yml:5:21: error: sub-scripts nested more than 64 deep "
+                      "[include-too-deep]\n", r.stderr)
+
+    def test_fifo_is_not_read(self):
+        fifo = os.path.join(self.dir, "pipe.yml")
+        os.mkfifo(fifo)
+        r = run("-target=ir", fifo)
+        self.assertEqual(r.returncode, 1)
+        self.assertEqual(r.stderr, f"smachac: error: cannot read `{fifo}`: it is not a regular "
+                                   "file [file-not-found]\n")
+
+
+class Determinism(TempDirTest):
+    def test_same_bytes_across_runs_directories_and_locales(self):
+        script = os.path.join(EXAMPLES, "sub_scripts.yml")
+        first = run("-target=json", script)
+        env = dict(os.environ, LC_ALL="de_DE.UTF-8", LANG="de_DE.UTF-8")
+        second = run("-target=json", script, cwd=self.dir, env=env)
+        self.assertEqual(first.returncode, 0, first.stderr)
+        self.assertEqual(first.stdout, second.stdout)
+
+
+class Targets(unittest.TestCase):
+    def test_every_example_compiles_to_ir_and_json(self):
+        for name in sorted(os.listdir(EXAMPLES)):
+            if not name.endswith(".yml"):
+                continue
+            path = os.path.join(EXAMPLES, name)
+            with self.subTest(example=name):
+                ir = run("-target=ir", path)
+                self.assertEqual((ir.returncode, ir.stderr), (0, ""))
+                doc = json.loads(run("-target=json", path).stdout)
+                self.assertEqual(doc["format"], "smachac-ir")
+                self.assertEqual(doc["root"]["kind"], "base")
+
+    def test_lint_checks_several_files(self):
+        files = [os.path.join(EXAMPLES, n) for n in ("sequence.yml", "nesting.yml")]
+        r = run("lint", *files)
+        self.assertEqual((r.returncode, r.stdout, r.stderr), (0, "", ""))
+
+    def test_syntax_only_writes_nothing(self):
+        r = run("-fsyntax-only", os.path.join(EXAMPLES, "sequence.yml"))
+        self.assertEqual((r.returncode, r.stdout, r.stderr), (0, "", ""))
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,59 @@
+// Diagnostic emission, -W options and the text printer.
+#include <doctest/doctest.h>
+
+#include "ir/support/diagnostic_emitter.h"
+#include "ir/support/diagnostic_printer.h"
+
+using smachac::DiagKind;
+using smachac::Severity;
+
+TEST_CASE("messages are formatted from the registry") {
+  smachac::DiagnosticEmitter diags;
+  smachac::SourceManager sources;
+  uint32_t f = sources.addFile("s.yml", "name: x\n  key: value\n");
+  diags.emit(DiagKind::DuplicateKey, {f, 2, 3, 3}, "key");
+  diags.note({f, 1, 1, 4}, "first defined here");
+  REQUIRE(diags.diagnostics().size() == 1);
+  CHECK(diags.hasErrors());
+  CHECK(smachac::formatDiagnosticText(diags.diagnostics()[0], sources) ==
+        "s.yml:2:3: error: duplicate key `key` [duplicate-key]\n"
+        "  key: value\n"
+        "  ^~~\n"
+        "s.yml:1:1: note: first defined here\n"
+        "name: x\n"
+        "^~~~\n");
+}
+
+TEST_CASE("carets follow tabs and multi-byte characters") {
+  smachac::DiagnosticEmitter diags;
+  smachac::SourceManager sources;
+  uint32_t f = sources.addFile("s.yml", "\tcafé: OPNE\n");
+  diags.emit(DiagKind::YamlSyntax, {f, 1, 9, 4}, "something");
+  CHECK(smachac::formatDiagnosticText(diags.diagnostics()[0], sources) ==
+        "s.yml:1:9: error: something [yaml-syntax]\n\tcafé: OPNE\n\t      ^~~~\n");
+}
+
+TEST_CASE("warning options") {
+  smachac::WarningOptions options;
+  CHECK(options.severityOf(DiagKind::UnknownRootKey) == Severity::Warning);
+  CHECK_FALSE(options.apply("-Wno-unknown-root-key").has_value());
+  CHECK(options.severityOf(DiagKind::UnknownRootKey) == Severity::Ignored);
+  CHECK_FALSE(options.apply("-Werror").has_value());
+  CHECK(options.severityOf(DiagKind::RootParamsIgnored) == Severity::Error);
+  CHECK_FALSE(options.apply("-Wno-error=root-params-ignored").has_value());
+  CHECK(options.severityOf(DiagKind::RootParamsIgnored) == Severity::Warning);
+  CHECK_FALSE(options.apply("-Wno-duplicate-key").has_value());
+  CHECK(options.severityOf(DiagKind::DuplicateKey) == Severity::Error);  // errors stay errors
+  CHECK(*options.apply("-Wunknown-rot-key") ==
+        "unknown diagnostic kind `unknown-rot-key` in -W flag; did you mean `unknown-root-key`?");
+}
+
+TEST_CASE("silenced diagnostics drop their notes") {
+  smachac::WarningOptions options;
+  CHECK_FALSE(options.apply("-Wno-unknown-root-key").has_value());
+  smachac::DiagnosticEmitter diags(options);
+  diags.emit(DiagKind::UnknownRootKey, {}, "x", "");
+  diags.note({}, "ignored");
+  CHECK(diags.diagnostics().empty());
+  CHECK(diags.warningCount() == 0);
+}

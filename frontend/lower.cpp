@@ -135,8 +135,7 @@ class Lowering {
                  std::vector<ir::Inclusion> included_from) {
     StateId id = addState(name, vars, ir::StateKind::Leaf, parent, std::move(included_from));
     if (!module_.state(id).template_name && !vars.find("template")) {
-      diags_.emit(DiagKind::MissingKey, name.loc, fmt::format("state `{}`", name.text),
-                  "template");
+      diags_.emit(DiagKind::MissingKey, name.loc, fmt::format("state `{}`", name.text), "template");
     }
   }
 
@@ -150,8 +149,7 @@ class Lowering {
                       const std::vector<IncludeFrame>& includes,
                       std::vector<ir::Inclusion> included_from) {
     if (vars.find("script")) diags_.emit(DiagKind::StatesWithScript, name.loc, name.text);
-    StateId id =
-        addState(name, vars, containerKind(vars), parent, std::move(included_from));
+    StateId id = addState(name, vars, containerKind(vars), parent, std::move(included_from));
     if (!module_.state(id).template_name && !vars.find("template")) {
       diags_.emit(DiagKind::MissingKey, name.loc, fmt::format("container `{}`", name.text),
                   "template");
@@ -168,8 +166,7 @@ class Lowering {
                     Level& level, std::vector<IncludeFrame> includes,
                     std::vector<ir::Inclusion> included_from) {
     ir::Name script;
-    if (!readName(script_value, fmt::format("`script` of state `{}`", name.text), script,
-                  diags_)) {
+    if (!readName(script_value, fmt::format("`script` of state `{}`", name.text), script, diags_)) {
       return;
     }
     std::optional<SubScriptState> sub = loader_.load(script);
@@ -216,8 +213,10 @@ class Lowering {
       Value* existing = sub.find(e.key);
       if (existing && existing->isMap() && e.value.isMap()) {
         for (const ir::MapEntry& inner : e.value.asMap()) {
-          if (Value* slot = existing->find(inner.key)) *slot = inner.value;
-          else existing->asMap().push_back(inner);
+          if (Value* slot = existing->find(inner.key))
+            *slot = inner.value;
+          else
+            existing->asMap().push_back(inner);
         }
       } else if (existing) {
         *existing = e.value;

@@ -10,9 +10,9 @@ namespace smachac::frontend {
 namespace {
 
 const std::vector<std::string>& knownRootKeys() {
-  static const std::vector<std::string> keys = {
-      "name",     "template",  "outcomes",      "states",
-      "userdata", "manifest",  "node_name",     "function_name"};
+  static const std::vector<std::string> keys = {"name",      "template",     "outcomes",
+                                                "states",    "userdata",     "manifest",
+                                                "node_name", "function_name"};
   return keys;
 }
 

@@ -11,7 +11,7 @@ namespace {
 bool isDigits(std::string_view s, int base) {
   if (s.empty()) return false;
   for (char c : s) {
-    bool ok = base == 16 ? std::isxdigit(static_cast<unsigned char>(c)) != 0
+    bool ok = base == 16  ? std::isxdigit(static_cast<unsigned char>(c)) != 0
               : base == 8 ? (c >= '0' && c <= '7')
                           : (c >= '0' && c <= '9');
     if (!ok) return false;
@@ -69,8 +69,7 @@ bool isFloatSyntax(std::string_view s) {
 }
 
 std::optional<double> parseFloat(std::string_view s) {
-  if (s == ".inf" || s == ".Inf" || s == ".INF" || s == "+.inf" || s == "+.Inf" ||
-      s == "+.INF") {
+  if (s == ".inf" || s == ".Inf" || s == ".INF" || s == "+.inf" || s == "+.Inf" || s == "+.INF") {
     return std::numeric_limits<double>::infinity();
   }
   if (s == "-.inf" || s == "-.Inf" || s == "-.INF") return -std::numeric_limits<double>::infinity();
@@ -79,7 +78,8 @@ std::optional<double> parseFloat(std::string_view s) {
   std::string_view body = s.starts_with('+') ? s.substr(1) : s;
   double v = 0;
   auto [end, error] = std::from_chars(body.data(), body.data() + body.size(), v);
-  if (error == std::errc::result_out_of_range) return std::strtod(std::string(body).c_str(), nullptr);
+  if (error == std::errc::result_out_of_range)
+    return std::strtod(std::string(body).c_str(), nullptr);
   if (error != std::errc()) return std::nullopt;
   return v;
 }

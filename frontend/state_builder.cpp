@@ -35,8 +35,7 @@ void readNameList(const Value& v, std::string_view key, std::string_view what,
 
 /// Calls `each(key name, value)` for a mapping, or reports the key as not a mapping.
 bool forEachEntry(const Value& v, std::string_view key, std::string_view what,
-                  std::string_view expected,
-                  const std::function<void(const ir::MapEntry&)>& each,
+                  std::string_view expected, const std::function<void(const ir::MapEntry&)>& each,
                   DiagnosticEmitter& diags) {
   if (!v.isMap()) {
     diags.emit(DiagKind::InvalidKeyType, v.loc, field(key, what), expected, describeValue(v));
@@ -50,55 +49,61 @@ ir::Name keyName(const ir::MapEntry& entry) { return {entry.key, entry.key_loc};
 
 void readTransitions(const Value& v, std::string_view what, ir::State& state,
                      DiagnosticEmitter& diags) {
-  forEachEntry(v, "transitions", what, "a mapping from outcome to target",
-               [&](const ir::MapEntry& e) {
-                 ir::Name target;
-                 if (readName(e.value, field("transitions", what) + " targets", target, diags)) {
-                   state.transitions.push_back({keyName(e), target, ir::TargetKind::Unresolved, {}});
-                 }
-               },
-               diags);
+  forEachEntry(
+      v, "transitions", what, "a mapping from outcome to target",
+      [&](const ir::MapEntry& e) {
+        ir::Name target;
+        if (readName(e.value, field("transitions", what) + " targets", target, diags)) {
+          state.transitions.push_back({keyName(e), target, ir::TargetKind::Unresolved, {}});
+        }
+      },
+      diags);
 }
 
 void readRemapping(const Value& v, std::string_view what, ir::State& state,
                    DiagnosticEmitter& diags) {
-  forEachEntry(v, "remapping", what, "a mapping from state key to parent key",
-               [&](const ir::MapEntry& e) {
-                 ir::Name parent;
-                 if (readName(e.value, field("remapping", what) + " values", parent, diags)) {
-                   state.remapping.push_back({keyName(e), parent});
-                 }
-               },
-               diags);
+  forEachEntry(
+      v, "remapping", what, "a mapping from state key to parent key",
+      [&](const ir::MapEntry& e) {
+        ir::Name parent;
+        if (readName(e.value, field("remapping", what) + " values", parent, diags)) {
+          state.remapping.push_back({keyName(e), parent});
+        }
+      },
+      diags);
 }
 
 void readArguments(const Value& v, std::string_view key, std::string_view what,
                    std::vector<ir::Argument>& out, DiagnosticEmitter& diags) {
-  forEachEntry(v, key, what, "a mapping",
-               [&](const ir::MapEntry& e) { out.push_back({keyName(e), e.value}); }, diags);
+  forEachEntry(
+      v, key, what, "a mapping",
+      [&](const ir::MapEntry& e) {
+        out.push_back({keyName(e), e.value});
+      },
+      diags);
 }
 
 void readOutcomeMap(const Value& v, std::string_view what, ir::State& state,
                     DiagnosticEmitter& diags) {
   std::string inner_what = field("outcome_map", what) + " entries";
-  forEachEntry(v, "outcome_map", what, "a mapping from outcome to {child: outcome}",
-               [&](const ir::MapEntry& e) {
-                 ir::OutcomeMapEntry entry{keyName(e), {}};
-                 if (!e.value.isMap()) {
-                   diags.emit(DiagKind::InvalidKeyType, e.value.loc, inner_what,
-                              "a mapping from child state to its outcome",
-                              describeValue(e.value));
-                   return;
-                 }
-                 for (const ir::MapEntry& c : e.value.asMap()) {
-                   ir::Name outcome;
-                   if (readName(c.value, inner_what, outcome, diags)) {
-                     entry.conditions.push_back({keyName(c), outcome});
-                   }
-                 }
-                 state.outcome_map.push_back(std::move(entry));
-               },
-               diags);
+  forEachEntry(
+      v, "outcome_map", what, "a mapping from outcome to {child: outcome}",
+      [&](const ir::MapEntry& e) {
+        ir::OutcomeMapEntry entry{keyName(e), {}};
+        if (!e.value.isMap()) {
+          diags.emit(DiagKind::InvalidKeyType, e.value.loc, inner_what,
+                     "a mapping from child state to its outcome", describeValue(e.value));
+          return;
+        }
+        for (const ir::MapEntry& c : e.value.asMap()) {
+          ir::Name outcome;
+          if (readName(c.value, inner_what, outcome, diags)) {
+            entry.conditions.push_back({keyName(c), outcome});
+          }
+        }
+        state.outcome_map.push_back(std::move(entry));
+      },
+      diags);
 }
 
 bool readCoreKey(const ir::MapEntry& e, std::string_view what, ir::State& state,
@@ -125,8 +130,10 @@ bool readCoreKey(const ir::MapEntry& e, std::string_view what, ir::State& state,
   } else if (key == "outcome_map") {
     readOutcomeMap(v, what, state, diags);
   } else if (key == "params") {
-    if (v.isMap()) state.params = v;
-    else diags.emit(DiagKind::InvalidKeyType, v.loc, field(key, what), "a mapping", describeValue(v));
+    if (v.isMap())
+      state.params = v;
+    else
+      diags.emit(DiagKind::InvalidKeyType, v.loc, field(key, what), "a mapping", describeValue(v));
   } else if (key == "default_outcome") {
     ir::Name name;
     if (readName(v, field(key, what), name, diags)) state.default_outcome = name;
@@ -138,8 +145,7 @@ bool readCoreKey(const ir::MapEntry& e, std::string_view what, ir::State& state,
 
 }  // namespace
 
-bool readName(const Value& value, std::string_view what, ir::Name& out,
-              DiagnosticEmitter& diags) {
+bool readName(const Value& value, std::string_view what, ir::Name& out, DiagnosticEmitter& diags) {
   if (!isScalarName(value)) {
     diags.emit(DiagKind::InvalidKeyType, value.loc, what, "a name", describeValue(value));
     return false;

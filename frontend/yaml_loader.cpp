@@ -53,8 +53,8 @@ class Converter {
     const std::string& text = node.Scalar();
     bool quoted = node.Tag() == "!";
     SourceLoc l = loc(node.Mark(), text.size() + (quoted ? 2 : 0));
-    ScalarResult r = resolveScalar(text, quoted ? ScalarStyle::Quoted : ScalarStyle::Plain,
-                                   node.Tag(), l);
+    ScalarResult r =
+        resolveScalar(text, quoted ? ScalarStyle::Quoted : ScalarStyle::Plain, node.Tag(), l);
     if (r.int_overflow) diags_.emit(DiagKind::IntegerOutOfRange, l, text);
     return std::move(r.value);
   }

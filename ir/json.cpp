@@ -83,25 +83,13 @@ class JsonWriter {
     return out;
   }
 
-  static std::string targetKind(TargetKind kind) {
-    switch (kind) {
-      case TargetKind::Unresolved:
-        return "unresolved";
-      case TargetKind::Sibling:
-        return "state";
-      case TargetKind::ContainerOutcome:
-        return "outcome";
-    }
-    return "unresolved";
-  }
-
   void addEdges(Json& j, const State& s) const {
     if (!s.transitions.empty()) {
       Json list = Json::array();
       for (const Transition& t : s.transitions) {
         list.push_back({{"outcome", name(t.outcome)},
                         {"target", name(t.target)},
-                        {"target_kind", targetKind(t.target_kind)}});
+                        {"target_kind", targetKindName(t.target_kind)}});
       }
       j["transitions"] = list;
     }

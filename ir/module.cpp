@@ -5,6 +5,18 @@
 
 namespace smachac::ir {
 
+std::string_view targetKindName(TargetKind kind) {
+  switch (kind) {
+    case TargetKind::Unresolved:
+      return "unresolved";
+    case TargetKind::Sibling:
+      return "state";
+    case TargetKind::ContainerOutcome:
+      return "outcome";
+  }
+  return "unresolved";
+}
+
 const Argument* State::findArg(std::string_view key) const {
   for (const Argument& arg : args) {
     if (arg.key.text == key) return &arg;

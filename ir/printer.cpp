@@ -41,18 +41,6 @@ class Printer {
     return out + "]";
   }
 
-  static std::string targetKind(TargetKind kind) {
-    switch (kind) {
-      case TargetKind::Unresolved:
-        return "unresolved";
-      case TargetKind::Sibling:
-        return "state";
-      case TargetKind::ContainerOutcome:
-        return "outcome";
-    }
-    return "unresolved";
-  }
-
   void printArguments(int depth, std::string_view field, const std::vector<Argument>& args,
                       bool typed) {
     if (args.empty()) return;
@@ -68,7 +56,7 @@ class Printer {
     line(depth, "transitions:");
     for (const Transition& t : s.transitions) {
       line(depth + 1, fmt::format("{} -> {} ({})", formatKey(t.outcome.text),
-                                  formatKey(t.target.text), targetKind(t.target_kind)));
+                                  formatKey(t.target.text), targetKindName(t.target_kind)));
     }
   }
 

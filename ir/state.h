@@ -23,6 +23,9 @@ struct Name {
 /// name that is neither (reported by the transition checks).
 enum class TargetKind : uint8_t { Unresolved, Sibling, ContainerOutcome };
 
+/// "unresolved", "state" or "outcome", as the IR printers show it.
+std::string_view targetKindName(TargetKind kind);
+
 struct Transition {
   Name outcome;
   Name target;
@@ -77,7 +80,7 @@ struct State {
   std::vector<Argument> callbacks;
   std::vector<OutcomeMapEntry> outcome_map;
   std::optional<Name> default_outcome;
-  std::vector<Argument> args;  ///< every other key, in script order
+  std::vector<Argument> args;            ///< every other key, in script order
   std::vector<Inclusion> included_from;  ///< innermost first; empty if written in place
 
   const Argument* findArg(std::string_view key) const;

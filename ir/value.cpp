@@ -99,7 +99,7 @@ std::string describeValue(const Value& value) {
       return "a float";
     case ValueKind::String:
       return value.asString().size() <= 40 ? fmt::format("the string `{}`", value.asString())
-                                            : "a string";
+                                           : "a string";
     case ValueKind::Expression:
       return "an expression";
     case ValueKind::List:

@@ -7,8 +7,8 @@
 namespace smachac {
 
 void checkFailed(const char* condition, const char* message, const char* file, int line) {
-  std::fprintf(stderr, "smachac: internal compiler error: %s (%s) at %s:%d\n", message,
-               condition, file, line);
+  std::fprintf(stderr, "smachac: internal compiler error: %s (%s) at %s:%d\n", message, condition,
+               file, line);
   std::fflush(stderr);
   std::abort();
 }

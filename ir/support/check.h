@@ -9,9 +9,9 @@ namespace smachac {
 
 }  // namespace smachac
 
-#define SMACHAC_CHECK(condition, message)                                  \
-  do {                                                                     \
-    if (!(condition)) {                                                    \
-      ::smachac::checkFailed(#condition, message, __FILE__, __LINE__);     \
-    }                                                                      \
+#define SMACHAC_CHECK(condition, message)                              \
+  do {                                                                 \
+    if (!(condition)) {                                                \
+      ::smachac::checkFailed(#condition, message, __FILE__, __LINE__); \
+    }                                                                  \
   } while (false)

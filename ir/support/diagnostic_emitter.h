@@ -20,9 +20,9 @@ class DiagnosticEmitter {
   template <typename... Args>
   void emit(DiagKind kind, SourceLoc loc, const Args&... args) {
     report(kind, loc,
-           fmt::vformat(fmt::string_view(diagKindInfo(kind).format.data(),
-                                         diagKindInfo(kind).format.size()),
-                        fmt::make_format_args(args...)));
+           fmt::vformat(
+               fmt::string_view(diagKindInfo(kind).format.data(), diagKindInfo(kind).format.size()),
+               fmt::make_format_args(args...)));
   }
 
   /// Attaches a note to the diagnostic emitted last (dropped if that one was silenced).

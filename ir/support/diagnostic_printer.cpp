@@ -66,8 +66,8 @@ std::string windowAround(std::string line, size_t& column) {
   while (start > 0 && (static_cast<unsigned char>(line[start]) & 0xC0) == 0x80) --start;
   size_t end = std::min(line.size(), start + kSnippetWidth);
   while (end < line.size() && (static_cast<unsigned char>(line[end]) & 0xC0) == 0x80) ++end;
-  std::string window = (start > 0 ? "..." : "") + line.substr(start, end - start) +
-                       (end < line.size() ? "..." : "");
+  std::string window =
+      (start > 0 ? "..." : "") + line.substr(start, end - start) + (end < line.size() ? "..." : "");
   column = column - start + (start > 0 ? 3 : 0);
   return window;
 }
@@ -157,9 +157,7 @@ Json sarifLog(std::span<const Diagnostic> diagnostics, const SourceManager& sour
   }
   Json results = Json::array();
   for (const Diagnostic& d : diagnostics) results.push_back(sarifResult(d, sources));
-  Json driver = {{"name", "smachac"},
-                 {"version", std::string(kVersion)},
-                 {"rules", rules}};
+  Json driver = {{"name", "smachac"}, {"version", std::string(kVersion)}, {"rules", rules}};
   Json run = {{"tool", {{"driver", driver}}}, {"results", results}};
   return {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
           {"version", "2.1.0"},

@@ -9,9 +9,11 @@ namespace smachac::driver {
 namespace {
 
 constexpr std::array<std::string_view, 17> kLongOptions = {
-    "target",      "fsyntax-only",  "fdiagnostics-format", "list-passes", "print-ir-after",
-    "disable-pass", "emit",         "flexbe-ros",          "sub",         "sup",
-    "version",     "help",          "context",             "block",       "builtin-set",
+    "target",       "fsyntax-only",   "fdiagnostics-format",
+    "list-passes",  "print-ir-after", "disable-pass",
+    "emit",         "flexbe-ros",     "sub",
+    "sup",          "version",        "help",
+    "context",      "block",          "builtin-set",
     "list-targets", "no-ansi"};
 
 bool isLongOption(std::string_view arg) {

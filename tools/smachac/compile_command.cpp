@@ -104,8 +104,8 @@ int runCompile(const Args& raw_args) {
   if (o.inputs.size() > 1) return usageError("one script at a time, unless -fsyntax-only");
   const backends::Target* target = backends::findTarget(o.common.target);
   if (!target) {
-    return usageError(fmt::format("unknown target `{}`; available: {}", o.common.target,
-                                  targetNames()));
+    return usageError(
+        fmt::format("unknown target `{}`; available: {}", o.common.target, targetNames()));
   }
   return emit(session, o, *target);
 }

@@ -9,7 +9,6 @@
 namespace smachac::driver {
 
 /// Returns an error message, or nullopt on success. "-" writes to stdout.
-std::optional<std::string> writeFileAtomically(const std::string& path,
-                                               const std::string& content);
+std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& content);
 
 }  // namespace smachac::driver

@@ -49,7 +49,8 @@ std::optional<std::string> Session::configure(const std::vector<std::string>& wa
 
 std::optional<ir::Module> Session::compile(const std::string& path) {
   frontend::FrontendOptions frontend_options{options_.script_dirs};
-  std::optional<ir::Module> module = frontend::lowerScript(path, frontend_options, sources_, *diags_);
+  std::optional<ir::Module> module =
+      frontend::lowerScript(path, frontend_options, sources_, *diags_);
   if (!module) return std::nullopt;
   passes::PassContext context{sources_, *diags_, options_.target};
   passes::PipelineOptions pipeline;

@@ -40,24 +40,26 @@ TEST_CASE("lookups against any key, in order") {
 }
 
 TEST_CASE("mapping values are resolved one level deep") {
-  Value vars = Value::map(
-      {{"params", {}, Value::map({{"v", {}, Value::real(0.5)}})},
-       {"userdata", {}, Value::map({{"speed", {}, list({list({str("v")})})},
-                                    {"deep", {}, Value::map({{"k", {}, list({list({str("v")})})}})}})}});
-  CHECK(resolved(vars) ==
-        "{params: {v: 0.5}, userdata: {speed: 0.5, deep: {k: [[\"v\"]]}}}");
+  Value vars =
+      Value::map({{"params", {}, Value::map({{"v", {}, Value::real(0.5)}})},
+                  {"userdata",
+                   {},
+                   Value::map({{"speed", {}, list({list({str("v")})})},
+                               {"deep", {}, Value::map({{"k", {}, list({list({str("v")})})}})}})}});
+  CHECK(resolved(vars) == "{params: {v: 0.5}, userdata: {speed: 0.5, deep: {k: [[\"v\"]]}}}");
 }
 
 TEST_CASE("constructs print parts like Python str()") {
-  Value vars = Value::map({{"params", {}, Value::map({{"b", {}, Value::boolean(true)}})},
-                           {"s", {}, list({str("flag="), list({list({str("b")})}), Value::integer(3)})},
-                           {"cb", {}, list({str("`f("), list({list({str("b")})}), str(")`")})}});
+  Value vars =
+      Value::map({{"params", {}, Value::map({{"b", {}, Value::boolean(true)}})},
+                  {"s", {}, list({str("flag="), list({list({str("b")})}), Value::integer(3)})},
+                  {"cb", {}, list({str("`f("), list({list({str("b")})}), str(")`")})}});
   CHECK(resolved(vars) == "{params: {b: true}, s: \"flag=True3\", cb: `f(True)`}");
 }
 
 TEST_CASE("a failed params lookup is an error") {
-  Value vars = Value::map({{"params", {}, Value::map({})},
-                           {"x", {}, list({str("params"), str("missing")})}});
+  Value vars = Value::map(
+      {{"params", {}, Value::map({})}, {"x", {}, list({str("params"), str("missing")})}});
   CHECK(resolved(vars) ==
         "{params: {}, x: [\"params\", \"missing\"]} | lookup `[params, missing]` does not "
         "resolve: `params` has no `missing`");

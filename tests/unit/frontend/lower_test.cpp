@@ -28,8 +28,9 @@ struct TempDir {
 
 TEST_CASE("containers, transitions and sub-scripts lower into one graph") {
   TempDir dir;
-  dir.write("lib/sub.yml", "- ANY:\n    template: StateMachine\n    outcomes: [done]\n"
-                           "    states:\n      - IN: {template: S, transitions: {ok: done}}\n");
+  dir.write("lib/sub.yml",
+            "- ANY:\n    template: StateMachine\n    outcomes: [done]\n"
+            "    states:\n      - IN: {template: S, transitions: {ok: done}}\n");
   std::string main = dir.write("main.yml",
                                "name: m\ntemplate: Base\noutcomes: [end]\nstates:\n"
                                "  - A: {template: S, transitions: {ok: B}}\n"

@@ -8,9 +8,8 @@ using smachac::ir::Value;
 
 TEST_CASE("keys are expanded in place, values untouched") {
   Value transitions = Value::map({{"ok", {}, Value::string("t")}});
-  Value state = Value::map({{"T", {}, Value::string("S")},
-                            {"t", {}, transitions},
-                            {"custom", {}, Value::integer(1)}});
+  Value state = Value::map(
+      {{"T", {}, Value::string("S")}, {"t", {}, transitions}, {"custom", {}, Value::integer(1)}});
   smachac::DiagnosticEmitter diags;
   smachac::frontend::expandShorthand(state, diags);
   CHECK(smachac::ir::formatValue(state) ==

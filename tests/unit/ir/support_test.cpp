@@ -23,9 +23,9 @@ TEST_CASE("utf-8 validation") {
   CHECK_FALSE(smachac::findInvalidUtf8("héllo ✓ 😀").has_value());
   CHECK(smachac::findInvalidUtf8("ab\xff") == 2u);
   CHECK(smachac::findInvalidUtf8("a\0b"s) == 1u);
-  CHECK(smachac::findInvalidUtf8("\xc0\xaf") == 0u);      // overlong
+  CHECK(smachac::findInvalidUtf8("\xc0\xaf") == 0u);       // overlong
   CHECK(smachac::findInvalidUtf8("x\xed\xa0\x80") == 1u);  // surrogate
-  CHECK(smachac::findInvalidUtf8("\xe2\x82") == 0u);      // truncated
+  CHECK(smachac::findInvalidUtf8("\xe2\x82") == 0u);       // truncated
 }
 
 TEST_CASE("source lines and offsets") {

@@ -7,7 +7,7 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DSMACHAC_WERROR=ON
 SMACHAC := $(BUILD)/tools/smachac/smachac
 
-.PHONY: all deps configure build test demo bench clean
+.PHONY: all deps configure build test demo bench fuzz test-sanitize clean
 
 all: build
 
@@ -33,5 +33,22 @@ bench: deps
 	cmake --build $(BUILD)-bench -j $(JOBS)
 	@bash bench/run.sh $(BUILD)-bench
 
+# Each libFuzzer harness for FUZZ_SECONDS with ASan + UBSan (clang); crashes land in
+# build-fuzz/artifacts/ and make the target fail.
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+	  -DSMACHAC_FUZZ=ON -DSMACHAC_SANITIZE=address,undefined
+	cmake --build build-fuzz -j $(JOBS)
+	@bash tools/fuzz.sh build-fuzz $(FUZZ_SECONDS)
+
+# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer.
+test-sanitize: deps
+	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMACHAC_WERROR=ON \
+	  -DSMACHAC_SANITIZE=address,undefined
+	cmake --build build-asan -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -LE tsan
+
 clean:
-	rm -rf $(BUILD) $(BUILD)-bench
+	rm -rf $(BUILD) $(BUILD)-bench build-fuzz build-asan

@@ -37,8 +37,7 @@ class Lowering {
   Lowering(const FrontendOptions& options, SourceManager& sources, DiagnosticEmitter& diags)
       : sources_(sources), diags_(diags), loader_(options.script_dirs, sources, diags) {}
 
-  std::optional<ir::Module> run(const std::string& path) {
-    LoadedYaml loaded = loadYamlFile(path, {}, sources_, diags_);
+  std::optional<ir::Module> run(LoadedYaml loaded) {
     if (!loaded.root) return std::nullopt;
     module_.files().push_back(loaded.file);
     if (!lowerRoot(*loaded.root)) return std::nullopt;
@@ -238,7 +237,15 @@ class Lowering {
 
 std::optional<ir::Module> lowerScript(const std::string& path, const FrontendOptions& options,
                                       SourceManager& sources, DiagnosticEmitter& diags) {
-  return Lowering(options, sources, diags).run(path);
+  return Lowering(options, sources, diags).run(loadYamlFile(path, {}, sources, diags));
+}
+
+std::optional<ir::Module> lowerScriptText(const std::string& path, std::string text,
+                                          const FrontendOptions& options, SourceManager& sources,
+                                          DiagnosticEmitter& diags) {
+  uint32_t file = sources.addFile(path, std::move(text));
+  LoadedYaml loaded{file, parseYaml(file, sources, diags)};
+  return Lowering(options, sources, diags).run(std::move(loaded));
 }
 
 }  // namespace smachac::frontend

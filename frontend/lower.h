@@ -28,4 +28,10 @@ struct FrontendOptions {
 std::optional<ir::Module> lowerScript(const std::string& path, const FrontendOptions& options,
                                       SourceManager& sources, DiagnosticEmitter& diags);
 
+/// The same for script text already in memory (`path` names it in diagnostics and is the
+/// base for sub-script lookups). Used by fuzzers and tools that hold the text.
+std::optional<ir::Module> lowerScriptText(const std::string& path, std::string text,
+                                          const FrontendOptions& options, SourceManager& sources,
+                                          DiagnosticEmitter& diags);
+
 }  // namespace smachac::frontend

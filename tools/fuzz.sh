@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer harness of a build-fuzz tree for a set time, seeded from its committed
+# corpus (tests/fuzz/corpus/<name>) and the golden scripts. New interesting inputs go to
+# build-fuzz/corpus/<name>; crashes to build-fuzz/artifacts/. Fails if any harness crashed.
+set -uo pipefail
+build=${1:?usage: tools/fuzz.sh BUILD_DIR [SECONDS]}
+seconds=${2:-60}
+root=$(cd "$(dirname "$0")/.." && pwd)
+status=0
+for fuzzer in "$build"/tests/fuzz/*; do
+  [ -x "$fuzzer" ] && [ -f "$fuzzer" ] || continue
+  name=$(basename "$fuzzer")
+  case "$name" in *_replay) continue ;; esac
+  corpus="$build/corpus/$name"
+  artifacts="$build/artifacts"
+  mkdir -p "$corpus" "$artifacts"
+  echo "== fuzz $name for ${seconds}s"
+  "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -max_len=65536 \
+    -print_final_stats=1 -artifact_prefix="$artifacts/$name-" \
+    "$corpus" "$root/tests/fuzz/corpus/$name" "$root/tests/golden" > "$build/$name.log" 2>&1
+  code=$?
+  grep -E 'stat::number_of_executed_units|stat::peak_rss_mb' "$build/$name.log" | sed 's/^/   /'
+  if [ $code -ne 0 ]; then
+    echo "   crashed (exit $code): see $build/$name.log and $artifacts/"
+    status=1
+  fi
+done
+exit $status

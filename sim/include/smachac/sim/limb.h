@@ -1,0 +1,93 @@
+// One Baxter arm: its seven joint PD servos (force-limited to the URDF efforts), smooth
+// joint-space moves with a tolerance and a timeout, joint readings and the endpoint (TCP) pose.
+//
+// A move follows a quintic (minimum-jerk) profile from the current positions to the goal; its
+// duration keeps every joint under `speed` times its velocity limit. The servo command carries
+// velocity feed-forward, so tracking lag stays small. A move succeeds when the profile has
+// ended and every joint is within `tolerance` of the goal, and times out otherwise.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "smachac/sim/types.h"
+
+namespace smachac::sim {
+
+class World;
+
+enum class MoveStatus {
+  kReached,        ///< every joint within tolerance of the goal
+  kTimeout,        ///< the goal was not reached within the timeout
+  kInvalidTarget,  ///< a goal value is not finite or lies outside the joint limits
+};
+
+struct MoveOptions {
+  double speed = 0.3;              ///< fraction of each joint's velocity limit (Baxter's default)
+  double tolerance = 0.008726646;  ///< rad, per joint (baxter_interface's default)
+  double timeout = 15.0;           ///< simulated seconds
+};
+
+struct MoveResult {
+  MoveStatus status = MoveStatus::kTimeout;
+  double maxError = 0.0;  ///< largest |goal - q| at the end (rad)
+  double duration = 0.0;  ///< simulated seconds spent
+  auto ok() const -> bool { return status == MoveStatus::kReached; }
+};
+
+class Limb {
+ public:
+  Limb(World& world, Side side);
+
+  auto side() const -> Side { return side_; }
+  /// "left_s0" ... "left_w2" (or right_*).
+  auto jointNames() const -> std::array<std::string, kArmJointCount>;
+  auto lowerLimits() const -> const JointPositions& { return lower_; }
+  auto upperLimits() const -> const JointPositions& { return upper_; }
+
+  auto jointPositions() const -> JointPositions;
+  auto jointVelocities() const -> JointPositions;
+  /// The TCP site (`<side>_gripper`, 0.27125 m beyond w2) in `frame`.
+  auto endpointPose(Frame frame = Frame::kBase) const -> Pose;
+
+  /// Moves to `goal` and blocks (stepping the world) until reached or timed out.
+  auto moveToJointPositions(const JointPositions& goal, const MoveOptions& options = {})
+      -> MoveResult;
+
+  /// Non-blocking form: starts the move and returns false (doing nothing) for an invalid goal.
+  /// Step the world and poll moveDone(); several limbs can move at once this way.
+  auto startMove(const JointPositions& goal, const MoveOptions& options = {}) -> bool;
+  auto moveDone() const -> bool;
+  /// Largest |goal - q| of the current move (rad).
+  auto moveError() const -> double;
+
+  /// Holds the current positions (cancels a move).
+  void holdCurrent();
+
+  /// Called by World inside each step: writes the servo commands for the current time.
+  void applyControl(double time);
+
+ private:
+  auto validGoal(const JointPositions& goal) const -> bool;
+  auto moveDuration(const JointPositions& from, const JointPositions& to, double speed) const
+      -> double;
+
+  World& world_;
+  Side side_;
+  std::array<int, kArmJointCount> qposAddress_{};
+  std::array<int, kArmJointCount> dofAddress_{};
+  std::array<int, kArmJointCount> actuator_{};
+  JointPositions lower_{};
+  JointPositions upper_{};
+  JointPositions velocityLimit_{};
+  JointPositions leadTime_{};  // kv / kp of each servo: velocity feed-forward
+  int site_ = -1;
+  // The current move: a quintic profile from start_ to goal_ over [startTime_, endTime_].
+  JointPositions start_{};
+  JointPositions goal_{};
+  double startTime_ = 0.0;
+  double endTime_ = 0.0;
+  double tolerance_ = 0.008726646;
+};
+
+}  // namespace smachac::sim

@@ -1,0 +1,15 @@
+// Where the MJCF models live: the source tree's sim/models by default (compiled in), or the
+// directory named by the environment variable SMACHAC_SIM_MODEL_DIR.
+#pragma once
+
+#include <string>
+
+namespace smachac::sim {
+
+/// The model directory: $SMACHAC_SIM_MODEL_DIR when set and non-empty, else sim/models.
+auto modelDirectory() -> std::string;
+
+/// modelDirectory() + "/scene.xml": Baxter, the table and three blocks.
+auto defaultScenePath() -> std::string;
+
+}  // namespace smachac::sim

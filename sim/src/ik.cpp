@@ -1,0 +1,189 @@
+// Ik: damped least squares on mj_jacSite over a scratch mjData, several seeds, clamped to
+// the joint limits.
+#include "smachac/sim/ik.h"
+
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "pose_math.h"
+#include "robot_names.h"
+#include "smachac/sim/limb.h"
+#include "smachac/sim/standard_poses.h"
+#include "smachac/sim/world.h"
+
+namespace smachac::sim {
+namespace {
+
+using Matrix6x7 = Eigen::Matrix<double, 6, kArmJointCount>;
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Vector7 = Eigen::Matrix<double, kArmJointCount, 1>;
+
+// Where one arm lives in the model.
+struct ArmIndex {
+  int site = -1;
+  std::array<int, kArmJointCount> qpos{};
+  std::array<int, kArmJointCount> dof{};
+};
+
+auto armIndex(const mjModel* model, Side side) -> ArmIndex {
+  ArmIndex arm;
+  arm.site = detail::objectId(model, mjOBJ_SITE, detail::tcpSiteName(side));
+  for (int i = 0; i < kArmJointCount; ++i) {
+    const int joint = detail::objectId(model, mjOBJ_JOINT, detail::armJointName(side, i));
+    arm.qpos[static_cast<size_t>(i)] = model->jnt_qposadr[joint];
+    arm.dof[static_cast<size_t>(i)] = model->jnt_dofadr[joint];
+  }
+  return arm;
+}
+
+// One solver run from one seed on the scratch data.
+class DlsRun {
+ public:
+  DlsRun(const mjModel* model, mjData* data, const ArmIndex& arm, const Limb& limb)
+      : model_(model),
+        data_(data),
+        arm_(arm),
+        limb_(limb),
+        jacp_(static_cast<size_t>(3 * model->nv)),
+        jacr_(static_cast<size_t>(3 * model->nv)) {}
+
+  auto run(const Pose& target, JointPositions q, const IkOptions& options, IkResult& out) -> bool {
+    const Eigen::Vector3d targetPosition = detail::toEigen(target.position);
+    const Eigen::Quaterniond targetOrientation = detail::toEigen(target.orientation);
+    for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
+      setJoints(q);
+      const Vector6 error = poseError(targetPosition, targetOrientation);
+      out.joints = q;
+      out.positionError = error.head<3>().norm();
+      out.orientationError = error.tail<3>().norm();
+      ++out.iterations;
+      if (out.positionError <= options.positionTolerance &&
+          out.orientationError <= options.orientationTolerance) {
+        return true;
+      }
+      q = clampToLimits(addStep(q, dampedStep(error, options)));
+    }
+    return false;
+  }
+
+  void setJoints(const JointPositions& q) {
+    for (size_t i = 0; i < q.size(); ++i) data_->qpos[arm_.qpos[i]] = q[i];
+    mj_kinematics(model_, data_);
+    mj_comPos(model_, data_);
+  }
+
+ private:
+  auto poseError(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) const
+      -> Vector6 {
+    const Pose current =
+        detail::poseFromMujoco(data_->site_xpos + 3 * arm_.site, data_->site_xmat + 9 * arm_.site);
+    Vector6 error;
+    error.head<3>() = position - detail::toEigen(current.position);
+    error.tail<3>() = detail::orientationError(orientation, detail::toEigen(current.orientation));
+    return error;
+  }
+
+  auto dampedStep(const Vector6& error, const IkOptions& options) -> Vector7 {
+    mj_jacSite(model_, data_, jacp_.data(), jacr_.data(), arm_.site);
+    Matrix6x7 jacobian;
+    for (int c = 0; c < kArmJointCount; ++c) {
+      const int dof = arm_.dof[static_cast<size_t>(c)];
+      for (int r = 0; r < 3; ++r) {
+        jacobian(r, c) = jacp_[static_cast<size_t>(r * model_->nv + dof)];
+        jacobian(r + 3, c) = jacr_[static_cast<size_t>(r * model_->nv + dof)];
+      }
+    }
+    const double lambda2 = options.damping * options.damping;
+    const Eigen::Matrix<double, 6, 6> jjt =
+        jacobian * jacobian.transpose() + lambda2 * Eigen::Matrix<double, 6, 6>::Identity();
+    Vector7 step = jacobian.transpose() * jjt.ldlt().solve(error);
+    const double largest = step.cwiseAbs().maxCoeff();
+    if (largest > options.maxStep) step *= options.maxStep / largest;
+    return step;
+  }
+
+  static auto addStep(JointPositions q, const Vector7& step) -> JointPositions {
+    for (size_t i = 0; i < q.size(); ++i) q[i] += step(static_cast<Eigen::Index>(i));
+    return q;
+  }
+
+  auto clampToLimits(JointPositions q) const -> JointPositions {
+    for (size_t i = 0; i < q.size(); ++i) {
+      q[i] = std::clamp(q[i], limb_.lowerLimits()[i], limb_.upperLimits()[i]);
+    }
+    return q;
+  }
+
+  const mjModel* model_;
+  mjData* data_;
+  const ArmIndex& arm_;
+  const Limb& limb_;
+  std::vector<double> jacp_;
+  std::vector<double> jacr_;
+};
+
+// Fixed, spread-out seeds for the left arm (mirrored for the right): elbow up and down,
+// wrist turned, reaching near and far.
+constexpr std::array<JointPositions, 4> kExtraLeftSeeds = {{
+    {0.3, -0.3, -1.5, 1.5, 1.2, 1.2, -1.0},
+    {-0.5, -0.6, 0.0, 1.8, 0.0, 0.4, 0.0},
+    {0.0, 0.2, -2.0, 0.8, 2.0, 1.5, -1.5},
+    {-0.8, -1.2, 1.0, 2.2, -1.0, 1.0, 1.0},
+}};
+
+}  // namespace
+
+Ik::Ik(const World& world) : world_(world), scratch_(mj_makeData(world.model())) {}
+
+Ik::~Ik() { mj_deleteData(scratch_); }
+
+auto Ik::seedsFor(Side side) const -> std::vector<JointPositions> {
+  std::vector<JointPositions> seeds = {world_.limb(side).jointPositions(), untuckPose(side),
+                                       neutralPose(side)};
+  for (const JointPositions& left : kExtraLeftSeeds) {
+    seeds.push_back(side == Side::kLeft ? left : mirrorPose(left));
+  }
+  return seeds;
+}
+
+auto Ik::solve(Side side, const Pose& target, Frame frame, const IkOptions& options) -> IkResult {
+  if (!detail::isValidPose(target)) return {.status = IkStatus::kInvalidTarget};
+  const std::vector<JointPositions> seeds = seedsFor(side);
+  return solveFromSeeds(side, world_.toWorld(detail::normalized(target), frame), seeds, options);
+}
+
+auto Ik::solveFromSeeds(Side side, const Pose& worldTarget, std::span<const JointPositions> seeds,
+                        const IkOptions& options) -> IkResult {
+  if (!detail::isValidPose(worldTarget)) return {.status = IkStatus::kInvalidTarget};
+  const Pose target = detail::normalized(worldTarget);
+  const ArmIndex arm = armIndex(world_.model(), side);
+  DlsRun solver(world_.model(), scratch_, arm, world_.limb(side));
+  IkResult best;
+  best.positionError = std::numeric_limits<double>::infinity();
+  int iterations = 0;
+  for (const JointPositions& seed : seeds) {
+    IkResult attempt;
+    const bool solved = solver.run(target, seed, options, attempt);
+    iterations += attempt.iterations;
+    if (solved) attempt.status = IkStatus::kSolved;
+    if (solved || attempt.positionError < best.positionError) best = attempt;
+    if (solved) break;
+  }
+  best.iterations = iterations;
+  return best;
+}
+
+auto Ik::forward(Side side, const JointPositions& joints) -> Pose {
+  const ArmIndex arm = armIndex(world_.model(), side);
+  DlsRun solver(world_.model(), scratch_, arm, world_.limb(side));
+  solver.setJoints(joints);
+  return detail::poseFromMujoco(scratch_->site_xpos + 3 * arm.site,
+                                scratch_->site_xmat + 9 * arm.site);
+}
+
+}  // namespace smachac::sim

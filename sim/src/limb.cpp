@@ -1,0 +1,154 @@
+// Limb: joint PD servos with velocity feed-forward along quintic joint-space moves.
+#include "smachac/sim/limb.h"
+
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pose_math.h"
+#include "robot_names.h"
+#include "smachac/sim/world.h"
+
+namespace smachac::sim {
+namespace {
+
+// URDF velocity limits (rad/s) of s0 s1 e0 e1 w0 w1 w2: MJCF has no such attribute.
+constexpr JointPositions kVelocityLimits = {1.5, 1.5, 1.5, 1.5, 4.0, 4.0, 4.0};
+constexpr double kShortestMove = 0.5;   // s
+constexpr double kLimitSlack = 1e-6;    // rad a goal may lie outside a limit (then clamped)
+constexpr double kQuinticPeak = 1.875;  // peak / mean speed of the minimum-jerk profile
+
+// Minimum-jerk profile: position fraction and its time derivative (per unit duration).
+auto quintic(double s) -> std::pair<double, double> {
+  s = std::clamp(s, 0.0, 1.0);
+  const double s3 = s * s * s;
+  return {s3 * (10.0 - 15.0 * s + 6.0 * s * s), 30.0 * s * s * (1.0 - 2.0 * s + s * s)};
+}
+
+auto index(int i) -> size_t { return static_cast<size_t>(i); }
+
+}  // namespace
+
+Limb::Limb(World& world, Side side) : world_(world), side_(side) {
+  const mjModel* model = world_.model();
+  for (int i = 0; i < kArmJointCount; ++i) {
+    const std::string name = detail::armJointName(side, i);
+    const int joint = detail::objectId(model, mjOBJ_JOINT, name);
+    actuator_[index(i)] = detail::objectId(model, mjOBJ_ACTUATOR, name);
+    qposAddress_[index(i)] = model->jnt_qposadr[joint];
+    dofAddress_[index(i)] = model->jnt_dofadr[joint];
+    lower_[index(i)] = model->jnt_range[2 * joint];
+    upper_[index(i)] = model->jnt_range[2 * joint + 1];
+    velocityLimit_[index(i)] = kVelocityLimits[index(i)];
+    const int a = actuator_[index(i)];
+    leadTime_[index(i)] =
+        -model->actuator_biasprm[a * mjNBIAS + 2] / model->actuator_gainprm[a * mjNGAIN];
+  }
+  site_ = detail::objectId(model, mjOBJ_SITE, detail::tcpSiteName(side));
+}
+
+auto Limb::jointNames() const -> std::array<std::string, kArmJointCount> {
+  std::array<std::string, kArmJointCount> names;
+  for (int i = 0; i < kArmJointCount; ++i) names[index(i)] = detail::armJointName(side_, i);
+  return names;
+}
+
+auto Limb::jointPositions() const -> JointPositions {
+  auto guard = world_.lock();
+  JointPositions q{};
+  for (size_t i = 0; i < q.size(); ++i) q[i] = world_.data()->qpos[qposAddress_[i]];
+  return q;
+}
+
+auto Limb::jointVelocities() const -> JointPositions {
+  auto guard = world_.lock();
+  JointPositions v{};
+  for (size_t i = 0; i < v.size(); ++i) v[i] = world_.data()->qvel[dofAddress_[i]];
+  return v;
+}
+
+auto Limb::endpointPose(Frame frame) const -> Pose {
+  auto guard = world_.lock();
+  const mjData* data = world_.data();
+  const Pose world =
+      detail::poseFromMujoco(data->site_xpos + 3 * site_, data->site_xmat + 9 * site_);
+  return world_.fromWorld(world, frame);
+}
+
+auto Limb::validGoal(const JointPositions& goal) const -> bool {
+  for (size_t i = 0; i < goal.size(); ++i) {
+    if (!std::isfinite(goal[i])) return false;
+    if (goal[i] < lower_[i] - kLimitSlack || goal[i] > upper_[i] + kLimitSlack) return false;
+  }
+  return true;
+}
+
+auto Limb::moveDuration(const JointPositions& from, const JointPositions& to, double speed) const
+    -> double {
+  double duration = kShortestMove;
+  const double fraction = std::clamp(speed, 0.01, 1.0);
+  for (size_t i = 0; i < from.size(); ++i) {
+    const double needed = kQuinticPeak * std::abs(to[i] - from[i]) / (fraction * velocityLimit_[i]);
+    duration = std::max(duration, needed);
+  }
+  return duration;
+}
+
+auto Limb::startMove(const JointPositions& goal, const MoveOptions& options) -> bool {
+  if (!validGoal(goal)) return false;
+  auto guard = world_.lock();
+  start_ = jointPositions();
+  for (size_t i = 0; i < goal.size(); ++i) goal_[i] = std::clamp(goal[i], lower_[i], upper_[i]);
+  startTime_ = world_.time();
+  endTime_ = startTime_ + moveDuration(start_, goal_, options.speed);
+  tolerance_ = options.tolerance;
+  return true;
+}
+
+auto Limb::moveError() const -> double {
+  const JointPositions q = jointPositions();
+  double error = 0.0;
+  for (size_t i = 0; i < q.size(); ++i) error = std::max(error, std::abs(goal_[i] - q[i]));
+  return error;
+}
+
+auto Limb::moveDone() const -> bool {
+  auto guard = world_.lock();
+  return world_.time() >= endTime_ && moveError() <= tolerance_;
+}
+
+auto Limb::moveToJointPositions(const JointPositions& goal, const MoveOptions& options)
+    -> MoveResult {
+  MoveResult result;
+  if (!startMove(goal, options)) {
+    result.status = MoveStatus::kInvalidTarget;
+    return result;
+  }
+  const double begin = world_.time();
+  const bool reached = world_.stepUntil([this] { return moveDone(); }, options.timeout);
+  result.status = reached ? MoveStatus::kReached : MoveStatus::kTimeout;
+  result.maxError = moveError();
+  result.duration = world_.time() - begin;
+  return result;
+}
+
+void Limb::holdCurrent() {
+  auto guard = world_.lock();
+  start_ = goal_ = jointPositions();
+  startTime_ = endTime_ = world_.time();
+}
+
+void Limb::applyControl(double time) {
+  const double duration = endTime_ - startTime_;
+  const double s = duration > 0.0 ? (time - startTime_) / duration : 1.0;
+  const auto [fraction, rate] = quintic(s);
+  mjData* data = world_.data();
+  for (size_t i = 0; i < goal_.size(); ++i) {
+    const double delta = goal_[i] - start_[i];
+    const double velocity = s < 1.0 && duration > 0.0 ? delta * rate / duration : 0.0;
+    data->ctrl[actuator_[i]] = start_[i] + delta * fraction + leadTime_[i] * velocity;
+  }
+}
+
+}  // namespace smachac::sim

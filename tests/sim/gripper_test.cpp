@@ -1,0 +1,65 @@
+// Gripper: jaw gaps, closing on nothing, grasp detection, and a dropped block detected.
+#include <doctest/doctest.h>
+
+#include "sim_test_support.h"
+#include "smachac/sim/gripper.h"
+#include "smachac/sim/ik.h"
+#include "smachac/sim/limb.h"
+#include "smachac/sim/standard_poses.h"
+
+namespace smachac::sim::test {
+namespace {
+
+// Moves the left arm to a TCP pose, failing the test if it cannot.
+void moveLeftTo(World& world, Ik& ik, const Pose& target) {
+  const IkResult solution = ik.solve(Side::kLeft, target);
+  REQUIRE(solution.ok());
+  REQUIRE(world.limb(Side::kLeft).moveToJointPositions(solution.joints, {.speed = 0.6}).ok());
+}
+
+TEST_SUITE("sim_gripper") {
+  TEST_CASE("open and close on nothing: slot-3 jaw gaps") {
+    auto world = loadWorld();
+    Gripper& gripper = world->gripper(Side::kRight);
+    const GripperResult opened = gripper.open();
+    CHECK(opened.status == GripperStatus::kOpened);
+    CHECK(opened.gap == doctest::Approx(0.0767).epsilon(0.01));
+    const GripperResult closed = gripper.close();
+    CHECK(closed.status == GripperStatus::kClosedEmpty);
+    CHECK_FALSE(closed.ok());
+    CHECK(closed.gap == doctest::Approx(0.035).epsilon(0.01));
+    CHECK(closed.heldBody.empty());
+    CHECK(gripper.side() == Side::kRight);
+  }
+
+  TEST_CASE("closing around a block detects the grasp; opening in the air drops it") {
+    auto world = loadWorld();
+    Ik ik(*world);
+    putBlockOnTable(*world, "block1", kPose1);
+    REQUIRE(world->limb(Side::kLeft)
+                .moveToJointPositions(untuckPose(Side::kLeft), {.speed = 1.0})
+                .ok());
+    Gripper& gripper = world->gripper(Side::kLeft);
+    REQUIRE(gripper.open().ok());
+    moveLeftTo(*world, ik, gripPose({kPose1.x, kPose1.y, kPose1.z + kHoverOffset}));
+    moveLeftTo(*world, ik, gripPose(kPose1));
+
+    const GripperResult grasped = gripper.close();
+    CHECK(grasped.status == GripperStatus::kGrasped);
+    CHECK(grasped.heldBody == "block1");
+    CHECK(grasped.gap == doctest::Approx(kBlockSize).epsilon(0.1));
+
+    moveLeftTo(*world, ik, gripPose({kPose1.x, kPose1.y, kPose1.z + kHoverOffset}));
+    CHECK(gripper.heldBody() == "block1");
+    CHECK(centreOf(*world, "block1").z > kBlockRestZ + 0.1);
+
+    REQUIRE(gripper.open().ok());
+    world->stepFor(1.0);
+    CHECK_FALSE(gripper.heldBody().has_value());
+    CHECK(centreOf(*world, "block1").z == doctest::Approx(kBlockRestZ).epsilon(0.05));
+    CHECK_FALSE(world->hasWarnings());
+  }
+}
+
+}  // namespace
+}  // namespace smachac::sim::test

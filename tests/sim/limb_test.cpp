@@ -1,0 +1,89 @@
+// Limb: moves that reach their goal within tolerance, timeouts and invalid goals as results,
+// holding a pose, and both arms moving at once in one world.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "sim_test_support.h"
+#include "smachac/sim/limb.h"
+#include "smachac/sim/standard_poses.h"
+
+namespace smachac::sim::test {
+namespace {
+
+TEST_SUITE("sim_limb") {
+  TEST_CASE("moving to untuck reaches it and holds it") {
+    auto world = loadWorld();
+    Limb& limb = world->limb(Side::kLeft);
+    const MoveResult result = limb.moveToJointPositions(untuckPose(Side::kLeft));
+    REQUIRE(result.ok());
+    CHECK(result.maxError <= MoveOptions{}.tolerance);
+    CHECK(result.duration > 1.0);  // speed 0.3 of the limit: a smooth move, not a jump
+    world->stepFor(1.0);
+    CHECK(maxJointError(limb.jointPositions(), untuckPose(Side::kLeft)) < 1e-3);
+    CHECK_FALSE(world->hasWarnings());
+  }
+
+  TEST_CASE("joint names follow Baxter's") {
+    auto world = loadWorld();
+    const auto names = world->limb(Side::kRight).jointNames();
+    CHECK(names[0] == "right_s0");
+    CHECK(names[6] == "right_w2");
+    CHECK(world->limb(Side::kLeft).side() == Side::kLeft);
+  }
+
+  TEST_CASE("a tight timeout gives a timeout result") {
+    auto world = loadWorld();
+    const MoveResult result =
+        world->limb(Side::kLeft).moveToJointPositions(untuckPose(Side::kLeft), {.timeout = 0.2});
+    CHECK(result.status == MoveStatus::kTimeout);
+    CHECK_FALSE(result.ok());
+    CHECK(result.duration == doctest::Approx(0.2).epsilon(0.02));
+    CHECK(result.maxError > 0.1);
+  }
+
+  TEST_CASE("goals outside the limits or not finite are rejected without moving") {
+    auto world = loadWorld();
+    Limb& limb = world->limb(Side::kLeft);
+    JointPositions beyond = neutralPose(Side::kLeft);
+    beyond[1] = 1.5;  // s1 upper limit is 1.047
+    CHECK(limb.moveToJointPositions(beyond).status == MoveStatus::kInvalidTarget);
+    JointPositions notFinite = neutralPose(Side::kLeft);
+    notFinite[3] = NAN;
+    CHECK(limb.moveToJointPositions(notFinite).status == MoveStatus::kInvalidTarget);
+    CHECK_FALSE(limb.startMove(notFinite));
+    CHECK(world->time() == 0.0);
+  }
+
+  TEST_CASE("both arms move at once in one world") {
+    auto world = loadWorld();
+    Limb& left = world->limb(Side::kLeft);
+    Limb& right = world->limb(Side::kRight);
+    REQUIRE(left.startMove(untuckPose(Side::kLeft)));
+    REQUIRE(right.startMove(untuckPose(Side::kRight)));
+    const bool done = world->stepUntil([&] { return left.moveDone() && right.moveDone(); }, 15.0);
+    REQUIRE(done);
+    CHECK(left.moveError() <= MoveOptions{}.tolerance);
+    CHECK(right.moveError() <= MoveOptions{}.tolerance);
+    // Mirror symmetry of the two arms.
+    const Pose l = left.endpointPose();
+    const Pose r = right.endpointPose();
+    CHECK(l.position.x == doctest::Approx(r.position.x).epsilon(1e-3));
+    CHECK(l.position.y == doctest::Approx(-r.position.y).epsilon(1e-3));
+  }
+
+  TEST_CASE("holdCurrent cancels a move") {
+    auto world = loadWorld();
+    Limb& limb = world->limb(Side::kLeft);
+    REQUIRE(limb.startMove(neutralPose(Side::kLeft)));
+    world->stepFor(0.5);
+    limb.holdCurrent();
+    const JointPositions held = limb.jointPositions();
+    world->stepFor(1.0);
+    CHECK(maxJointError(limb.jointPositions(), held) < 0.02);
+    CHECK(limb.moveDone());
+  }
+}
+
+}  // namespace
+}  // namespace smachac::sim::test

@@ -1,0 +1,38 @@
+// Shared fixtures of the physical simulation tests: the scene of shared/baxter/EXPERIMENTS.md
+// (table, 5 cm blocks, demo poses in the base frame) and small geometric helpers.
+#pragma once
+
+#include <memory>
+
+#include "smachac/sim/types.h"
+#include "smachac/sim/world.h"
+
+namespace smachac::sim::test {
+
+inline constexpr double kBlockSize = 0.05;
+inline constexpr double kTableTopZ = -0.155;  // base frame
+inline constexpr double kBlockRestZ = kTableTopZ + kBlockSize / 2;
+inline constexpr double kHoverOffset = 0.15;
+/// The demo's TCP targets (base frame): block pose 1 and block pose 2.
+inline constexpr Vec3 kPose1{0.7, 0.15, -0.129};
+inline constexpr Vec3 kPose2{0.75, 0.0, -0.129};
+
+/// Loads sim/models/scene.xml; fails the test when it cannot.
+auto loadWorld() -> std::unique_ptr<World>;
+
+/// TCP pose over a point with the demo's overhead gripper orientation (base frame).
+auto gripPose(const Vec3& tcp) -> Pose;
+/// The TCP grip pose for a block resting with its centre at `centre`: 1 mm above the centre,
+/// as in the demo (block centre -0.130, TCP target -0.129).
+auto gripPoseForBlock(const Vec3& centre) -> Pose;
+/// Puts a block on the table (centre at rest height) with its TCP target at `tcp`'s x, y.
+void putBlockOnTable(World& world, const char* name, const Vec3& tcp);
+
+/// Largest |a[i] - b[i]| over the joints.
+auto maxJointError(const JointPositions& a, const JointPositions& b) -> double;
+auto distance(const Vec3& a, const Vec3& b) -> double;
+auto horizontalDistance(const Vec3& a, const Vec3& b) -> double;
+/// Centre of a body (base frame); fails the test for an unknown body.
+auto centreOf(const World& world, const char* name) -> Vec3;
+
+}  // namespace smachac::sim::test

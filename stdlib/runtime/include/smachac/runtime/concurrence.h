@@ -1,0 +1,102 @@
+// Concurrence: SMACH's split-join container. Every child runs at once (the first on the
+// calling thread, the others on their own threads); the container returns when all have
+// returned. Its outcome, in SMACH's documented precedence:
+//
+//   1. outcome_cb(child outcomes), when given and it returns a non-empty outcome;
+//   2. the outcome_map entry that decided first (see below);
+//   3. the best outcome_map entry satisfied by the final child outcomes;
+//   4. default_outcome.
+//
+// An entry {container_outcome: {child: outcome, ...}} is satisfied when every child it names
+// returned that outcome. Entries rank by how many children they name (more wins, as SMACH
+// documents for subsets), then by map order, later wins (what SMACH's loop does for ties).
+// With early_exit (the default), an entry decides as soon as it is satisfied and no entry that
+// could still be satisfied ranks above it: the children still running are preempted.
+// child_termination_cb runs after each child returns; returning true preempts the others.
+// A preempt request on the container reaches every running child; it then returns `preempted`.
+#pragma once
+
+#include <concepts>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "smachac/runtime/container.h"
+
+namespace smachac::runtime {
+
+/// container outcome -> {child label -> child outcome}
+using OutcomeMap = std::map<std::string, std::map<std::string, std::string>>;
+/// child label -> outcome, for the children that have returned so far.
+using ChildOutcomes = std::map<std::string, std::string>;
+
+struct ConcurrenceSpec {
+  Keys outcomes{};
+  std::string default_outcome{};
+  OutcomeMap outcome_map{};
+  Keys input_keys{};
+  Keys output_keys{};
+  Map userdata{};
+  /// After each child returns; true preempts the children still running.
+  std::function<bool(const ChildOutcomes&)> child_termination_cb{};
+  /// After all returned; a non-empty result is the container's outcome.
+  std::function<std::string(const ChildOutcomes&)> outcome_cb{};
+  /// Preempt the remaining children once an outcome_map entry has decided.
+  bool early_exit = true;
+};
+
+class Concurrence : public Container {
+ public:
+  explicit Concurrence(ConcurrenceSpec spec);
+  ~Concurrence() override;
+
+  template <std::derived_from<State> T>
+  T& add(std::string label, std::unique_ptr<T> state, Remapping remapping = {}) {
+    T& added = *state;
+    addState(std::move(label), std::move(state), std::move(remapping));
+    return added;
+  }
+
+  std::string execute(UserData& parent) override;
+  void requestPreempt() override;
+
+ protected:
+  void collectOwnProblems(std::vector<std::string>& problems) override;
+  std::string kindAndName() const override;
+
+ private:
+  struct Entry {
+    int outcome = 0;                                ///< index in outcomes()
+    std::vector<std::pair<int, std::string>> need;  ///< child index, outcome
+  };
+  struct Run;
+
+  void addState(std::string label, std::unique_ptr<State> state, Remapping remapping);
+  bool begin();
+  void runAll();
+  void runOne(std::size_t index);
+  void childDone(std::size_t index, std::optional<std::string> outcome, std::exception_ptr error);
+  void settleLocked(bool preempt_others);
+  void preemptRunningLocked();
+  std::string finish();
+  ChildOutcomes snapshotLocked() const;
+  bool satisfied(const Entry& entry) const;
+  bool possible(const Entry& entry) const;
+  bool outranks(int a, int b) const;
+  std::optional<int> decideLocked(bool final) const;
+  std::string chooseOutcome(const ChildOutcomes& outcomes_so_far, std::optional<int> entry);
+
+  ConcurrenceSpec spec_;
+  std::vector<Entry> entries_;  ///< resolved outcome_map, in map order
+  std::mutex callback_mutex_;   ///< serialises child_termination_cb
+  std::mutex mutex_;            ///< guards run_
+  std::unique_ptr<Run> run_;    ///< state of the current execution
+};
+
+}  // namespace smachac::runtime

@@ -1,0 +1,91 @@
+// The reusable states behind SMACHA's core templates (reference/smacha-behaviour.md §6).
+//
+//   CallbacksState           runs its callbacks, returns `succeeded`
+//   PrintUserdataState       prints `userdata.<key>: <value>` for each input key
+//   RandomOutcomeState       runs its callbacks, picks one of its outcomes (seedable)
+//   ConditionalOutcomeState  runs its callbacks, returns the first outcome whose key is true,
+//                            else `default`
+//   SleepState               sleeps, waking at once on preemption (then returns `preempted`)
+//
+// A callback computes the value of one output key from the userdata: callbacks are keyed by
+// that output key, which the state declares for them, and run in key order (SMACHA sorts
+// callbacks by name).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "smachac/runtime/state.h"
+#include "smachac/runtime/value.h"
+
+namespace smachac::runtime {
+
+using Callback = std::function<Value(UserData&)>;
+/// output key -> callback writing it.
+using Callbacks = std::map<std::string, Callback>;
+
+/// Runs `callbacks` in key order, writing each result to its key.
+void runCallbacks(const Callbacks& callbacks, UserData& userdata);
+
+/// Seed for RandomOutcomeStates made without one (each mixes in its path). Unset: random.
+void setRandomSeed(std::optional<uint64_t> seed);
+std::optional<uint64_t> randomSeed();
+
+class CallbacksState : public State {
+ public:
+  explicit CallbacksState(StateSpec spec = {}, Callbacks callbacks = {});
+  std::string execute(UserData& userdata) override;
+
+ private:
+  Callbacks callbacks_;
+};
+
+class PrintUserdataState : public State {
+ public:
+  /// Prints to `out` (nullptr: std::cout).
+  explicit PrintUserdataState(StateSpec spec = {}, std::ostream* out = nullptr);
+  std::string execute(UserData& userdata) override;
+
+ private:
+  std::ostream* out_;
+};
+
+class RandomOutcomeState : public State {
+ public:
+  /// Outcomes default to {succeeded}; writes the chosen outcome to output key `outcome`.
+  explicit RandomOutcomeState(StateSpec spec = {}, Callbacks callbacks = {},
+                              std::optional<uint64_t> seed = std::nullopt);
+  std::string execute(UserData& userdata) override;
+
+ private:
+  Callbacks callbacks_;
+  std::optional<uint64_t> seed_;
+  bool seeded_ = false;
+  uint64_t rng_ = 0;  ///< SplitMix64 state: the same sequence on every platform
+};
+
+class ConditionalOutcomeState : public State {
+ public:
+  /// Outcomes get `default` appended last; each other outcome becomes an input and output key
+  /// (the condition), plus output key `outcome` (the choice).
+  ConditionalOutcomeState(StateSpec spec, Callbacks callbacks = {});
+  std::string execute(UserData& userdata) override;
+
+ private:
+  Callbacks callbacks_;
+};
+
+class SleepState : public State {
+ public:
+  explicit SleepState(double seconds, StateSpec spec = {});
+  std::string execute(UserData& userdata) override;
+
+ private:
+  double seconds_;
+};
+
+}  // namespace smachac::runtime

@@ -1,0 +1,106 @@
+// State: the unit of a SMACH machine. A state declares its outcomes and the userdata keys it
+// reads (input keys) and writes (output keys), and execute() returns one of its outcomes.
+//
+// Preemption is cooperative, as in SMACH: requestPreempt() (from any thread) sets a flag that
+// the running state polls with preemptRequested() or sleeps on with waitForPreempt(); a state
+// that honours it calls servicePreempt() and returns `preempted`. Containers forward requests
+// to their running children and always finish with `preempted` once asked (see README.md).
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "smachac/runtime/userdata.h"
+
+namespace smachac::runtime {
+
+/// The reserved outcome of a preempted state; any state may return it.
+inline constexpr std::string_view kPreempted = "preempted";
+
+/// What every state declares, written with designated initializers:
+///   {.outcomes = {"succeeded", "aborted"}, .input_keys = {"x"}, .output_keys = {"y"}}
+struct StateSpec {
+  Keys outcomes{};
+  Keys input_keys{};
+  Keys output_keys{};
+};
+
+class TraceSink;
+
+class State {
+ public:
+  explicit State(StateSpec spec);
+  virtual ~State();
+  State(const State&) = delete;
+  State& operator=(const State&) = delete;
+
+  /// Runs the state; returns one of outcomes() (or `preempted`).
+  virtual std::string execute(UserData& userdata) = 0;
+
+  const Keys& outcomes() const { return outcomes_; }
+  const Keys& inputKeys() const { return input_keys_; }
+  const Keys& outputKeys() const { return output_keys_; }
+  bool hasOutcome(std::string_view outcome) const;
+  bool declaresInput(std::string_view key) const;
+  bool declaresOutput(std::string_view key) const;
+
+  /// Labels from the root joined by '/', e.g. "SUB/FOO"; the root's path is empty.
+  const std::string& path() const { return path_; }
+  /// The path for messages: the root is shown as `root`.
+  std::string displayName() const;
+
+  /// Asks the state to stop soon. Thread-safe; containers forward it to running children.
+  virtual void requestPreempt();
+  bool preemptRequested() const { return preempt_.load(std::memory_order_acquire); }
+  /// Clears the request: the state has acted on it.
+  void servicePreempt();
+  /// Clears a request the state did not act on (containers do this after a child returns).
+  void recallPreempt() { servicePreempt(); }
+  /// Sleeps up to `timeout`; returns true as soon as a preempt is requested (then the caller
+  /// should servicePreempt() and return `preempted`), false when the time ran out.
+  bool waitForPreempt(std::chrono::duration<double> timeout);
+
+  /// Checks this state and everything under it; throws ConsistencyError listing every problem.
+  void checkConsistency();
+
+  /// Sends trace events of this state and everything under it to `sink` (nullptr: none).
+  /// Attach before running.
+  void setTraceSink(std::shared_ptr<TraceSink> sink);
+  TraceSink* traceSink() const { return trace_; }
+
+ protected:
+  /// For states whose keys follow from their arguments (callbacks add output keys).
+  void addOutcome(const std::string& outcome);
+  void addInputKey(const std::string& key);
+  void addOutputKey(const std::string& key);
+
+  /// Containers: append the problems of this state and its children; true when none.
+  virtual bool collectProblems(std::vector<std::string>& problems);
+  virtual void propagateTrace(TraceSink* sink);
+  virtual void propagatePath(const std::string& path);
+
+  static bool collectProblemsOf(State& child, std::vector<std::string>& problems) {
+    return child.collectProblems(problems);
+  }
+  static void assignTrace(State& child, TraceSink* sink) { child.propagateTrace(sink); }
+  static void assignPath(State& child, const std::string& path) { child.propagatePath(path); }
+
+ private:
+  Keys outcomes_;
+  Keys input_keys_;
+  Keys output_keys_;
+  std::string path_;
+  std::atomic<bool> preempt_{false};
+  std::mutex wait_mutex_;
+  std::condition_variable wait_cv_;
+  TraceSink* trace_ = nullptr;
+  std::shared_ptr<TraceSink> owned_trace_;
+};
+
+}  // namespace smachac::runtime

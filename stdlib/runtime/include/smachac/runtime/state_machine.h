@@ -1,0 +1,72 @@
+// StateMachine: SMACH's sequential container. The first state added is the initial one; each
+// outcome of a child goes where its transition says: a sibling label or an outcome of the
+// machine. An outcome without a transition falls through to the machine's outcome of the same
+// name (SMACH's implicit terminal transition); a label wins over a machine outcome.
+//
+// Before the first run the machine is checked (as SMACH's check_consistency, recursively) and
+// its transitions are resolved to indices, so a transition costs no string map lookup.
+#pragma once
+
+#include <concepts>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "smachac/runtime/container.h"
+
+namespace smachac::runtime {
+
+/// Outcome -> sibling label or container outcome ("" also means the container outcome).
+using Transitions = std::map<std::string, std::string, std::less<>>;
+
+struct StateMachineSpec {
+  Keys outcomes{};
+  Keys input_keys{};
+  Keys output_keys{};
+  /// Initial userdata of the machine's scope (the script's `userdata:`).
+  Map userdata{};
+};
+
+class StateMachine : public Container {
+ public:
+  explicit StateMachine(StateMachineSpec spec);
+
+  /// Adds a child; returns it (typed) so generated code can fill a nested container after.
+  template <std::derived_from<State> T>
+  T& add(std::string label, std::unique_ptr<T> state, Transitions transitions = {},
+         Remapping remapping = {}) {
+    T& added = *state;
+    addState(std::move(label), std::move(state), std::move(transitions), std::move(remapping));
+    return added;
+  }
+
+  std::string execute(UserData& parent) override;
+  void requestPreempt() override;
+
+ protected:
+  void collectOwnProblems(std::vector<std::string>& problems) override;
+  std::string kindAndName() const override;
+
+ private:
+  /// Where an outcome leads: a child index (>= 0) or ~outcome index (< 0).
+  using Target = int32_t;
+
+  void addState(std::string label, std::unique_ptr<State> state, Transitions transitions,
+                Remapping remapping);
+  void resolveChild(std::size_t index, std::vector<std::string>& problems);
+  std::string runFrom(std::size_t index);
+  bool enterChild(int index);
+  bool leaveChild(std::size_t index);
+  Target resolve(std::size_t index, const std::string& outcome) const;
+  void emitTransition(std::size_t index, const std::string& outcome, Target target) const;
+
+  std::vector<Transitions> transitions_;    ///< per child, as added
+  std::vector<std::vector<Target>> table_;  ///< per child, per declared outcome
+  std::mutex mutex_;                        ///< guards current_ against requestPreempt
+  int current_ = -1;                        ///< running child, -1 between children
+};
+
+}  // namespace smachac::runtime

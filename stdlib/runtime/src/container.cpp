@@ -1,0 +1,144 @@
+// Container: children, the userdata scope and its key copying, checks common to both kinds,
+// and runChild(), where every child executes.
+#include "smachac/runtime/container.h"
+
+#include <set>
+
+#include "smachac/runtime/errors.h"
+#include "text.h"
+
+namespace smachac::runtime {
+
+Container::Child::Child(std::string label_in, std::unique_ptr<State> state_in,
+                        Remapping remapping_in, UserDataStore& store)
+    : label(std::move(label_in)),
+      state(std::move(state_in)),
+      remapping(std::move(remapping_in)),
+      view(store, *state, &remapping) {}
+
+Container::Container(StateSpec spec, Map userdata)
+    : State(std::move(spec)), userdata_(std::move(userdata)) {}
+
+std::vector<std::string> Container::labels() const {
+  std::vector<std::string> out;
+  for (const Child& child : children_) out.push_back(child.label);
+  return out;
+}
+
+int Container::indexOf(std::string_view label) const {
+  for (std::size_t i = 0; i < children_.size(); ++i) {
+    if (children_[i].label == label) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+State& Container::child(std::string_view label) {
+  int index = indexOf(label);
+  if (index < 0) throw Error(kindAndName() + " has no state " + backticked(label));
+  return *children_[static_cast<std::size_t>(index)].state;
+}
+
+Container::Child& Container::addChild(std::string label, std::unique_ptr<State> state,
+                                      Remapping remapping) {
+  if (state == nullptr) throw Error(kindAndName() + ": state " + backticked(label) + " is null");
+  Child& child =
+      children_.emplace_back(std::move(label), std::move(state), std::move(remapping), userdata_);
+  assignPath(*child.state, childPath(child.label));
+  assignTrace(*child.state, traceSink());
+  invalidate();
+  return child;
+}
+
+std::string Container::childPath(const std::string& label) const {
+  return path().empty() ? label : path() + "/" + label;
+}
+
+void Container::propagatePath(const std::string& path) {
+  State::propagatePath(path);
+  for (Child& child : children_) assignPath(*child.state, childPath(child.label));
+}
+
+void Container::propagateTrace(TraceSink* sink) {
+  State::propagateTrace(sink);
+  for (Child& child : children_) assignTrace(*child.state, sink);
+}
+
+void Container::ensureChecked() {
+  if (!checked_) checkConsistency();
+}
+
+bool Container::collectProblems(std::vector<std::string>& problems) {
+  std::size_t before = problems.size();
+  collectCommonProblems(problems);
+  collectOwnProblems(problems);
+  for (Child& child : children_) collectProblemsOf(*child.state, problems);
+  checked_ = problems.size() == before;
+  return checked_;
+}
+
+void Container::collectCommonProblems(std::vector<std::string>& problems) const {
+  if (children_.empty()) problems.push_back(kindAndName() + " has no states");
+  std::set<std::string_view> seen;
+  for (const Child& child : children_) {
+    if (!seen.insert(child.label).second) {
+      problems.push_back(kindAndName() + " has two states labelled " + backticked(child.label));
+    }
+  }
+}
+
+std::string Container::runChild(Child& child) {
+  TraceSink* sink = traceSink();
+  const std::string& path = child.state->path();
+  child.view.trackWrites(sink != nullptr);
+  if (sink != nullptr) sink->write({.kind = TraceKind::Enter, .state = path});
+  std::string outcome;
+  try {
+    outcome = child.state->execute(child.view);
+  } catch (const ExecutionError&) {
+    throw;
+  } catch (const ConsistencyError&) {
+    throw;
+  } catch (const Error& e) {
+    fail(*child.state, e.what());
+  } catch (const std::exception& e) {
+    fail(*child.state, "state " + backticked(child.state->displayName()) + " failed: " + e.what());
+  } catch (...) {
+    fail(*child.state,
+         "state " + backticked(child.state->displayName()) + " failed: unknown exception");
+  }
+  if (sink != nullptr) {
+    sink->write({.kind = TraceKind::Exit,
+                 .state = path,
+                 .outcome = outcome,
+                 .written = &child.view.written()});
+  }
+  return outcome;
+}
+
+void Container::fail(const State& who, const std::string& message) const {
+  emit({.kind = TraceKind::Error, .state = who.path(), .message = message});
+  throw ExecutionError(message);
+}
+
+void Container::copyInputKeys(UserData& parent) {
+  for (const std::string& key : inputKeys()) {
+    if (std::optional<Value> value = parent.find(key)) userdata_.set(key, std::move(*value));
+  }
+}
+
+void Container::copyOutputKeys(UserData& parent) {
+  for (const std::string& key : outputKeys()) {
+    if (std::optional<Value> value = userdata_.find(key)) parent.set(key, std::move(*value));
+  }
+}
+
+std::string Container::finishPreempted() {
+  servicePreempt();
+  return std::string(kPreempted);
+}
+
+void Container::emit(TraceEvent event) const {
+  if (TraceSink* sink = traceSink()) sink->write(event);
+}
+
+}  // namespace smachac::runtime

@@ -1,0 +1,161 @@
+// The core states of SMACHA's templates: callbacks, print, random and conditional outcomes,
+// sleep. Each follows its template's Python class (reference/smacha-behaviour.md §6).
+#include "smachac/runtime/core_states.h"
+
+#include <atomic>
+#include <functional>
+#include <iostream>
+#include <mutex>
+#include <random>
+
+namespace smachac::runtime {
+
+namespace {
+
+constexpr const char* kSucceeded = "succeeded";
+constexpr const char* kDefault = "default";
+constexpr const char* kOutcomeKey = "outcome";
+
+std::atomic<bool> g_seed_set{false};
+std::atomic<uint64_t> g_seed{0};
+
+/// Fills in the outcomes a template defaults to when the script gives none.
+StateSpec withDefaultOutcome(StateSpec spec) {
+  if (spec.outcomes.empty()) spec.outcomes.push_back(kSucceeded);
+  return spec;
+}
+
+/// One step of SplitMix64: a fixed, portable sequence for a given seed.
+uint64_t splitMix64(uint64_t& state) {
+  uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+/// FNV-1a, so that each unseeded random state draws its own sequence from the global seed.
+uint64_t hashPath(const std::string& path) {
+  uint64_t hash = 0xcbf29ce484222325ULL;
+  for (unsigned char c : path) hash = (hash ^ c) * 0x100000001b3ULL;
+  return hash;
+}
+
+std::mutex& printMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+}  // namespace
+
+void runCallbacks(const Callbacks& callbacks, UserData& userdata) {
+  for (const auto& [key, callback] : callbacks) userdata.set(key, callback(userdata));
+}
+
+void setRandomSeed(std::optional<uint64_t> seed) {
+  g_seed.store(seed.value_or(0));
+  g_seed_set.store(seed.has_value());
+}
+
+std::optional<uint64_t> randomSeed() {
+  if (!g_seed_set.load()) return std::nullopt;
+  return g_seed.load();
+}
+
+// --- CallbacksState --------------------------------------------------------------------------
+
+CallbacksState::CallbacksState(StateSpec spec, Callbacks callbacks)
+    : State(withDefaultOutcome(std::move(spec))), callbacks_(std::move(callbacks)) {
+  for (const auto& entry : callbacks_) addOutputKey(entry.first);
+}
+
+std::string CallbacksState::execute(UserData& userdata) {
+  runCallbacks(callbacks_, userdata);
+  return kSucceeded;
+}
+
+// --- PrintUserdataState ----------------------------------------------------------------------
+
+PrintUserdataState::PrintUserdataState(StateSpec spec, std::ostream* out)
+    : State(withDefaultOutcome(std::move(spec))), out_(out != nullptr ? out : &std::cout) {}
+
+std::string PrintUserdataState::execute(UserData& userdata) {
+  std::string text;
+  for (const std::string& key : inputKeys()) {
+    text += "userdata." + key + ": " + userdata.at(key).str() + "\n";
+  }
+  std::lock_guard lock(printMutex());
+  *out_ << text << std::flush;
+  return kSucceeded;
+}
+
+// --- RandomOutcomeState ----------------------------------------------------------------------
+
+RandomOutcomeState::RandomOutcomeState(StateSpec spec, Callbacks callbacks,
+                                       std::optional<uint64_t> seed)
+    : State(withDefaultOutcome(std::move(spec))), callbacks_(std::move(callbacks)), seed_(seed) {
+  addOutputKey(kOutcomeKey);
+  for (const auto& entry : callbacks_) addOutputKey(entry.first);
+}
+
+std::string RandomOutcomeState::execute(UserData& userdata) {
+  runCallbacks(callbacks_, userdata);
+  if (!seeded_) {
+    std::optional<uint64_t> global = randomSeed();
+    rng_ = seed_    ? *seed_
+           : global ? *global ^ hashPath(path())
+                    : (uint64_t{std::random_device{}()} << 32) ^ std::random_device{}();
+    seeded_ = true;
+  }
+  const std::string& outcome = outcomes()[splitMix64(rng_) % outcomes().size()];
+  userdata.set(kOutcomeKey, outcome);
+  return outcome;
+}
+
+// --- ConditionalOutcomeState -----------------------------------------------------------------
+
+ConditionalOutcomeState::ConditionalOutcomeState(StateSpec spec, Callbacks callbacks)
+    : State([&] {
+        StateSpec declared{
+            .outcomes = {}, .input_keys = spec.input_keys, .output_keys = spec.output_keys};
+        for (const std::string& outcome : spec.outcomes) {
+          if (outcome != kDefault) declared.outcomes.push_back(outcome);
+        }
+        declared.outcomes.push_back(kDefault);
+        return declared;
+      }()),
+      callbacks_(std::move(callbacks)) {
+  for (const std::string& outcome : outcomes()) {
+    if (outcome == kDefault) continue;
+    addInputKey(outcome);
+    addOutputKey(outcome);
+  }
+  addOutputKey(kOutcomeKey);
+  for (const auto& entry : callbacks_) addOutputKey(entry.first);
+}
+
+std::string ConditionalOutcomeState::execute(UserData& userdata) {
+  runCallbacks(callbacks_, userdata);
+  for (const std::string& outcome : outcomes()) {
+    if (outcome == kDefault) break;
+    if (userdata.at(outcome).truthy()) {
+      userdata.set(kOutcomeKey, outcome);
+      return outcome;
+    }
+  }
+  return kDefault;
+}
+
+// --- SleepState ------------------------------------------------------------------------------
+
+SleepState::SleepState(double seconds, StateSpec spec)
+    : State(withDefaultOutcome(std::move(spec))), seconds_(seconds) {}
+
+std::string SleepState::execute(UserData& /*userdata*/) {
+  if (waitForPreempt(std::chrono::duration<double>(seconds_))) {
+    servicePreempt();
+    return std::string(kPreempted);
+  }
+  return kSucceeded;
+}
+
+}  // namespace smachac::runtime

@@ -1,0 +1,136 @@
+// StateMachine: the consistency check that resolves transitions to indices, and the run loop.
+//
+// Preemption: requestPreempt() sets the flag and forwards it to the running child under
+// mutex_; the loop checks the flag under the same lock before starting a child and after it
+// returns, so a request is never lost between children, and stops with `preempted`.
+#include "smachac/runtime/state_machine.h"
+
+#include "smachac/runtime/errors.h"
+#include "text.h"
+
+namespace smachac::runtime {
+
+StateMachine::StateMachine(StateMachineSpec spec)
+    : Container({.outcomes = std::move(spec.outcomes),
+                 .input_keys = std::move(spec.input_keys),
+                 .output_keys = std::move(spec.output_keys)},
+                std::move(spec.userdata)) {}
+
+std::string StateMachine::kindAndName() const {
+  return "state machine " + backticked(displayName());
+}
+
+void StateMachine::addState(std::string label, std::unique_ptr<State> state,
+                            Transitions transitions, Remapping remapping) {
+  addChild(std::move(label), std::move(state), std::move(remapping));
+  transitions_.push_back(std::move(transitions));
+}
+
+void StateMachine::collectOwnProblems(std::vector<std::string>& problems) {
+  table_.assign(children().size(), {});
+  for (std::size_t i = 0; i < children().size(); ++i) resolveChild(i, problems);
+}
+
+void StateMachine::resolveChild(std::size_t index, std::vector<std::string>& problems) {
+  const State& state = *children()[index].state;
+  const Transitions& transitions = transitions_[index];
+  std::string who = "state " + backticked(state.displayName()) + ": ";
+  for (const auto& [outcome, target] : transitions) {
+    if (!state.hasOutcome(outcome)) {
+      problems.push_back(who + "transition from " + backticked(outcome) +
+                         ", which is not one of its outcomes");
+    }
+  }
+  for (const std::string& outcome : state.outcomes()) {
+    auto it = transitions.find(outcome);
+    bool explicit_target = it != transitions.end() && !it->second.empty();
+    const std::string& target = explicit_target ? it->second : outcome;
+    int child = explicit_target ? indexOf(target) : -1;
+    int own = indexIn(outcomes(), target);
+    if (child >= 0) {
+      table_[index].push_back(child);
+    } else if (own >= 0) {
+      table_[index].push_back(~own);
+    } else if (explicit_target) {
+      problems.push_back(who + "outcome " + backticked(outcome) + " goes to " + backticked(target) +
+                         ", which is neither a state nor an outcome of " + kindAndName());
+    } else {
+      problems.push_back(who + "outcome " + backticked(outcome) +
+                         " has no transition and is not an outcome of " + kindAndName());
+    }
+  }
+}
+
+std::string StateMachine::execute(UserData& parent) {
+  ensureChecked();
+  copyInputKeys(parent);
+  std::string outcome = runFrom(0);
+  copyOutputKeys(parent);
+  return outcome;
+}
+
+std::string StateMachine::runFrom(std::size_t index) {
+  for (;;) {
+    if (!enterChild(static_cast<int>(index))) return finishPreempted();
+    std::string outcome;
+    try {
+      outcome = runChild(children()[index]);
+    } catch (...) {
+      leaveChild(index);
+      throw;
+    }
+    if (leaveChild(index)) return finishPreempted();
+    Target target = resolve(index, outcome);
+    emitTransition(index, outcome, target);
+    if (target < 0) return outcomes()[static_cast<std::size_t>(~target)];
+    index = static_cast<std::size_t>(target);
+  }
+}
+
+bool StateMachine::enterChild(int index) {
+  std::lock_guard lock(mutex_);
+  if (preemptRequested()) return false;
+  current_ = index;
+  return true;
+}
+
+bool StateMachine::leaveChild(std::size_t index) {
+  std::lock_guard lock(mutex_);
+  current_ = -1;
+  State& child = *children()[index].state;
+  if (child.preemptRequested()) child.recallPreempt();
+  return preemptRequested();
+}
+
+void StateMachine::requestPreempt() {
+  std::lock_guard lock(mutex_);
+  State::requestPreempt();
+  if (current_ >= 0) children()[static_cast<std::size_t>(current_)].state->requestPreempt();
+}
+
+StateMachine::Target StateMachine::resolve(std::size_t index, const std::string& outcome) const {
+  const State& state = *children()[index].state;
+  int position = indexIn(state.outcomes(), outcome);
+  if (position >= 0) return table_[index][static_cast<std::size_t>(position)];
+  // An undeclared `preempted` (the child was preempted on its own) falls through.
+  int own = indexIn(outcomes(), outcome);
+  if (outcome == kPreempted && own >= 0) return ~own;
+  std::string message = "state " + backticked(state.displayName()) + " returned outcome " +
+                        backticked(outcome) + ", which is not one of its outcomes";
+  fail(state, message);
+}
+
+void StateMachine::emitTransition(std::size_t index, const std::string& outcome,
+                                  Target target) const {
+  if (traceSink() == nullptr) return;
+  bool terminal = target < 0;
+  const std::string& to = terminal ? outcomes()[static_cast<std::size_t>(~target)]
+                                   : children()[static_cast<std::size_t>(target)].label;
+  emit({.kind = TraceKind::Transition,
+        .state = children()[index].state->path(),
+        .outcome = outcome,
+        .target = to,
+        .terminal = terminal});
+}
+
+}  // namespace smachac::runtime

@@ -4,20 +4,61 @@
 
 #include "ir/support/check.h"
 #include "ir/verify.h"
+#include "passes/optimize/transforms.h"
+#include "passes/validate/checks.h"
 
 namespace smachac::passes {
 namespace {
 
+void verifyIr(const ir::Module& module, PassContext&) {
+  std::optional<std::string> problem = ir::verify(module);
+  SMACHAC_CHECK(!problem, problem ? problem->c_str() : "");
+}
+
+constexpr PassInfo check(std::string_view name, std::string_view description, CheckFn fn) {
+  return {name, description, PassKind::Check, fn, nullptr};
+}
+
+constexpr PassInfo transform(std::string_view name, std::string_view description, TransformFn fn) {
+  return {name, description, PassKind::Transform, nullptr, fn};
+}
+
 constexpr PassInfo kPasses[] = {
-    // Filled in as checks and transforms are written (one file each under validate/,
-    // optimize/, analysis/).
-    {"verify-ir", "check the IR's structural invariants (a failure is a compiler bug)",
-     PassKind::Check,
-     [](const ir::Module& m, PassContext&) {
-       std::optional<std::string> problem = ir::verify(m);
-       SMACHAC_CHECK(!problem, problem ? problem->c_str() : "");
-     },
-     nullptr},
+    // The frontend's output must be well formed before any check walks it.
+    check("verify-ir", "check the IR's structural invariants (a failure is a compiler bug)",
+          verifyIr),
+
+    // Checks: read-only, all of them run even after errors. They depend only on the
+    // frontend's resolution of transitions, not on each other; the order is the order their
+    // diagnostics appear in: names, then the graph, then the data flowing through it.
+    check("check-names", "duplicate state names, names clashing with outcomes, identifiers",
+          checkNames),
+    check("check-transitions", "transition targets and the mapping of declared outcomes",
+          checkTransitions),
+    check("check-concurrence", "outcome maps, default outcomes and parallel writes",
+          checkConcurrence),
+    check("check-reachability", "unreachable states, livelocks, containers that never finish",
+          checkReachability),
+    check("check-userdata-flow", "userdata keys read before they are defined on every path",
+          checkUserdataFlow),
+    check("check-userdata-usage", "userdata values overwritten or never read", checkUserdataUsage),
+    check("check-userdata-types", "literal types of keys copied across containers",
+          checkUserdataTypes),
+
+    // Transforms: only with PipelineOptions::optimize, and only on a module without errors
+    // (warnings, and errors downgraded with -Wno-error=, are fine: unresolved targets and
+    // unmapped outcomes make a transform leave that part alone).
+    // Pruning first: it hoists the userdata of pruned states into their container, which
+    // dedupe-userdata then cleans, and it can leave containers with a single state to fold.
+    transform("prune-unreachable-states", "remove states no transition path reaches",
+              pruneUnreachableStates),
+    transform("dedupe-userdata", "remove userdata entries that repeat the value in effect",
+              dedupeUserdata),
+    // Last: it folds only containers whose state sets no userdata in them, which the two
+    // passes above may have removed.
+    transform("fold-trivial-containers",
+              "replace a StateMachine holding one pass-through state by that state",
+              foldTrivialContainers),
 };
 
 }  // namespace
@@ -36,10 +77,10 @@ bool runPipeline(ir::Module& module, PassContext& context, const PipelineOptions
     if (options.disabled.contains(pass.name)) continue;
     if (pass.kind == PassKind::Check) {
       pass.check(module, context);
-    } else if (!context.diags.hasErrors()) {
+    } else if (options.optimize && !context.diags.hasErrors()) {
       pass.transform(module, context);
       std::optional<std::string> problem = ir::verify(module);
-      SMACHAC_CHECK(!problem, "a transform broke the IR");
+      SMACHAC_CHECK(!problem, problem ? problem->c_str() : "a transform broke the IR");
     }
     bool print = options.print_ir_after == "all" || options.print_ir_after == pass.name;
     if (print && options.print_ir) options.print_ir(pass.name, module);

@@ -26,6 +26,8 @@ void addCommonOptions(CLI::App& app, CommonOptions& o) {
   app.add_option("--print-ir-after", o.print_ir_after,
                  "print the IR to stderr after this pass (or `all`)");
   app.add_flag("--list-passes", o.list_passes, "list the passes and exit");
+  app.add_flag("-O,--optimize", o.optimize,
+               "run the optimisation passes (prune, fold, de-duplicate) after the checks");
 }
 
 std::optional<std::string> Session::configure(const std::vector<std::string>& warning_flags,
@@ -56,6 +58,7 @@ std::optional<ir::Module> Session::compile(const std::string& path) {
   passes::PipelineOptions pipeline;
   pipeline.disabled.insert(options_.disabled_passes.begin(), options_.disabled_passes.end());
   pipeline.print_ir_after = options_.print_ir_after;
+  pipeline.optimize = options_.optimize;
   pipeline.print_ir = [this](std::string_view pass, const ir::Module& m) {
     std::cerr << "; IR after " << pass << "\n" << ir::printModule(m, sources_);
   };

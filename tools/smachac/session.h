@@ -26,6 +26,7 @@ struct CommonOptions {
   std::vector<std::string> disabled_passes;
   std::string print_ir_after;
   bool list_passes = false;
+  bool optimize = false;
 };
 
 /// Registers the common options on a CLI11 app.

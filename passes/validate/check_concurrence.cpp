@@ -1,0 +1,191 @@
+// check-concurrence: Concurrence containers, with SMACH's semantics (concurrence.py): every
+// child runs; when all have finished, the outcome_map entries are checked in order (SMACHA
+// renders them sorted by outcome) and the last one whose conditions all hold gives the
+// outcome; if none holds, the default_outcome does.
+//   * missing-key                  no `default_outcome` (SMACH requires one)
+//   * unknown-default-outcome      `default_outcome` is not an outcome of the concurrence
+//   * unknown-outcome-map-outcome  an `outcome_map` key is not an outcome of the concurrence
+//   * unknown-outcome-map-child    a condition names a state that is not a child
+//   * undeclared-outcome           a condition names an outcome its child does not declare
+//   * shadowed-outcome-map-entry   an entry that can never be chosen: an entry checked after
+//                                  it needs a subset of its conditions (or the same ones)
+//   * unused-container-outcome     an outcome neither in `outcome_map` nor the default
+//   * concurrent-write             two children write the same userdata key (after remapping)
+//   * ignored-concurrence-key      `outcome_map` or `default_outcome` on another kind of state
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "ir/support/suggest.h"
+#include "passes/analysis/children.h"
+#include "passes/analysis/outcomes.h"
+#include "passes/analysis/userdata_scope.h"
+#include "passes/validate/checks.h"
+
+namespace smachac::passes {
+namespace {
+
+/// An outcome_map entry whose conditions all name real children and outcomes.
+struct ValidEntry {
+  const ir::OutcomeMapEntry* entry;
+  std::vector<std::pair<std::string_view, std::string_view>> conditions;  ///< sorted
+};
+
+class ConcurrenceChecker {
+ public:
+  ConcurrenceChecker(const ir::Module& module, ir::StateId id, DiagnosticEmitter& diags)
+      : module_(module),
+        id_(id),
+        c_(module.state(id)),
+        diags_(diags),
+        outcomes_(nameSet(c_.outcomes)) {
+    for (ir::StateId child : c_.children) children_.emplace(module.state(child).name.text, child);
+  }
+
+  void run() {
+    checkDefaultOutcome();
+    std::vector<ValidEntry> valid;
+    for (const ir::OutcomeMapEntry& entry : c_.outcome_map) {
+      if (checkEntry(entry)) valid.push_back(validEntry(entry));
+    }
+    reportShadowed(valid);
+    reportUnusedOutcomes();
+    reportConcurrentWrites();
+  }
+
+ private:
+  void checkDefaultOutcome() {
+    if (!c_.default_outcome) {
+      diags_.emit(DiagKind::MissingKey, c_.name.loc, "concurrence `" + c_.name.text + "`",
+                  "default_outcome");
+      return;
+    }
+    const ir::Name& outcome = *c_.default_outcome;
+    if (outcomes_.contains(outcome.text)) return;
+    diags_.emit(DiagKind::UnknownDefaultOutcome, outcome.loc, outcome.text, c_.name.text,
+                didYouMean(outcome.text, nameTexts(c_.outcomes)));
+  }
+
+  /// Reports the entry's problems; returns whether it has none.
+  bool checkEntry(const ir::OutcomeMapEntry& entry) {
+    bool ok = true;
+    if (!outcomes_.contains(entry.outcome.text)) {
+      diags_.emit(DiagKind::UnknownOutcomeMapOutcome, entry.outcome.loc, entry.outcome.text,
+                  c_.name.text, didYouMean(entry.outcome.text, nameTexts(c_.outcomes)));
+      ok = false;
+    }
+    for (const ir::OutcomeCondition& condition : entry.conditions) {
+      ok = checkCondition(condition) && ok;
+    }
+    return ok;
+  }
+
+  bool checkCondition(const ir::OutcomeCondition& condition) {
+    auto it = children_.find(condition.child.text);
+    if (it == children_.end()) {
+      diags_.emit(DiagKind::UnknownOutcomeMapChild, condition.child.loc, condition.child.text,
+                  c_.name.text, didYouMean(condition.child.text, childNames(module_, c_)));
+      return false;
+    }
+    const ir::State& child = module_.state(it->second);
+    if (!declaresOutcomes(child) || contains(child.outcomes, condition.child_outcome.text)) {
+      return true;
+    }
+    diags_.emit(DiagKind::UndeclaredOutcome, condition.child_outcome.loc, child.name.text,
+                condition.child_outcome.text,
+                didYouMean(condition.child_outcome.text, nameTexts(child.outcomes)));
+    return false;
+  }
+
+  static ValidEntry validEntry(const ir::OutcomeMapEntry& entry) {
+    ValidEntry valid{&entry, {}};
+    for (const ir::OutcomeCondition& condition : entry.conditions) {
+      valid.conditions.emplace_back(condition.child.text, condition.child_outcome.text);
+    }
+    std::sort(valid.conditions.begin(), valid.conditions.end());
+    return valid;
+  }
+
+  /// Entries are checked sorted by outcome and the last that holds wins, so an entry is
+  /// shadowed by any later entry whose conditions are a subset of its own.
+  void reportShadowed(std::vector<ValidEntry>& entries) {
+    std::sort(entries.begin(), entries.end(), [](const ValidEntry& a, const ValidEntry& b) {
+      return a.entry->outcome.text < b.entry->outcome.text;
+    });
+    for (size_t i = 0; i < entries.size(); ++i) {
+      const auto& conditions = entries[i].conditions;
+      for (size_t j = i + 1; j < entries.size(); ++j) {
+        const auto& later = entries[j].conditions;
+        if (!std::includes(conditions.begin(), conditions.end(), later.begin(), later.end())) {
+          continue;
+        }
+        diags_.emit(DiagKind::ShadowedOutcomeMapEntry, entries[i].entry->outcome.loc,
+                    entries[i].entry->outcome.text, entries[j].entry->outcome.text);
+        break;
+      }
+    }
+  }
+
+  void reportUnusedOutcomes() {
+    if (!c_.default_outcome) return;  // already an error
+    NameSet used;
+    for (const ir::OutcomeMapEntry& entry : c_.outcome_map) used.insert(entry.outcome.text);
+    if (c_.default_outcome) used.insert(c_.default_outcome->text);
+    for (const ir::Name& outcome : c_.outcomes) {
+      if (!used.insert(outcome.text).second) continue;
+      diags_.emit(DiagKind::UnusedContainerOutcome, outcome.loc, c_.name.text, outcome.text,
+                  "it is neither an `outcome_map` key nor the `default_outcome`");
+    }
+  }
+
+  void reportConcurrentWrites() {
+    UserdataScope scope(module_, id_);
+    std::unordered_map<uint32_t, std::pair<uint32_t, const KeyUse*>> first;
+    for (uint32_t child = 0; child < scope.childCount(); ++child) {
+      for (const KeyUse& write : scope.writes(child)) {
+        auto [it, inserted] = first.emplace(write.key, std::make_pair(child, &write));
+        if (inserted || it->second.first == child) continue;
+        diags_.emit(DiagKind::ConcurrentWrite, write.scope_name->loc, childName(module_, c_, child),
+                    childName(module_, c_, it->second.first), scope.keyName(write.key),
+                    c_.name.text);
+        diags_.note(it->second.second->scope_name->loc,
+                    "`" + childName(module_, c_, it->second.first) + "` writes it here");
+      }
+    }
+  }
+
+  const ir::Module& module_;
+  ir::StateId id_;
+  const ir::State& c_;
+  DiagnosticEmitter& diags_;
+  NameSet outcomes_;
+  std::unordered_map<std::string_view, ir::StateId> children_;
+};
+
+void checkIgnoredKeys(const ir::State& state, DiagnosticEmitter& diags) {
+  if (!state.outcome_map.empty()) {
+    diags.emit(DiagKind::IgnoredConcurrenceKey, state.outcome_map.front().outcome.loc,
+               "outcome_map", state.name.text);
+  }
+  if (state.default_outcome) {
+    diags.emit(DiagKind::IgnoredConcurrenceKey, state.default_outcome->loc, "default_outcome",
+               state.name.text);
+  }
+}
+
+}  // namespace
+
+void checkConcurrence(const ir::Module& module, PassContext& context) {
+  for (ir::StateId id : module.preorder()) {
+    const ir::State& state = module.state(id);
+    if (state.kind == ir::StateKind::Concurrence) {
+      ConcurrenceChecker(module, id, context.diags).run();
+    } else {
+      checkIgnoredKeys(state, context.diags);
+    }
+  }
+}
+
+}  // namespace smachac::passes

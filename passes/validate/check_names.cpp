@@ -1,0 +1,131 @@
+// check-names: the names of states and keys.
+//   * duplicate-state-name      two children of one container have the same name (SMACH keeps
+//                               one state per label; transitions could not tell them apart)
+//   * state-named-like-outcome  a state of a StateMachine (or the root) is named like an outcome
+//                               of the container: transitions to that name reach the state
+//   * duplicate-list-entry      a name listed twice in `outcomes`, `input_keys`, `output_keys`
+//   * invalid-identifier        for code targets (passes/analysis/identifiers.h), names that
+//                               become identifiers: the script name (the variable
+//                               `<name lower>`), container names (`sm_<name lower>`), and
+//                               userdata keys (`ud.<key>`; entries of `userdata` are also
+//                               written lower-cased) in `userdata`, `input_keys`, `output_keys`,
+//                               `remapping` (both sides) and `callbacks`
+//   * template-argument-not-identifier
+//                               for code targets, a template argument key that no template
+//                               can refer to
+#include <fmt/core.h>
+
+#include <string_view>
+#include <unordered_map>
+
+#include "passes/analysis/identifiers.h"
+#include "passes/analysis/outcomes.h"
+#include "passes/validate/checks.h"
+
+namespace smachac::passes {
+namespace {
+
+class NameChecker {
+ public:
+  NameChecker(const ir::Module& module, PassContext& context)
+      : module_(module), diags_(context.diags), rules_(identifierRules(context.target)) {}
+
+  void run() {
+    for (ir::StateId id : module_.preorder()) {
+      const ir::State& state = module_.state(id);
+      if (ir::isContainer(state.kind)) checkChildren(state);
+      checkList(state, state.outcomes, "outcomes");
+      checkList(state, state.input_keys, "input_keys");
+      checkList(state, state.output_keys, "output_keys");
+      if (rules_ != IdentifierRules::None) checkIdentifiers(state);
+    }
+  }
+
+ private:
+  void checkChildren(const ir::State& container) {
+    std::unordered_map<std::string_view, const ir::State*> seen;
+    NameSet outcomes = isSequential(container.kind) ? nameSet(container.outcomes) : NameSet();
+    for (ir::StateId id : container.children) {
+      const ir::State& child = module_.state(id);
+      auto [it, inserted] = seen.emplace(child.name.text, &child);
+      if (!inserted) {
+        diags_.emit(DiagKind::DuplicateStateName, child.name.loc, container.name.text,
+                    child.name.text);
+        diags_.note(it->second->name.loc, "the first state named so is here");
+      }
+      if (outcomes.contains(child.name.text)) {
+        diags_.emit(DiagKind::StateNamedLikeOutcome, child.name.loc, child.name.text,
+                    container.name.text, child.name.text);
+      }
+    }
+  }
+
+  void checkList(const ir::State& state, const std::vector<ir::Name>& names,
+                 std::string_view field) {
+    if (names.size() < 2) return;
+    NameSet seen;
+    for (const ir::Name& name : names) {
+      if (!seen.insert(name.text).second) {
+        diags_.emit(DiagKind::DuplicateListEntry, name.loc, name.text, field, state.name.text);
+      }
+    }
+  }
+
+  void checkIdentifiers(const ir::State& state) {
+    if (state.kind == ir::StateKind::Base) {
+      checkVariable("script name", state.name, asciiLower(state.name.text));
+    } else if (ir::isContainer(state.kind)) {
+      checkVariable("container name", state.name, "sm_" + asciiLower(state.name.text));
+    }
+    for (const ir::Argument& entry : state.userdata) {
+      if (checkKey(entry.key) && rules_ == IdentifierRules::Python) {
+        checkVariable("userdata key", entry.key, asciiLower(entry.key.text));
+      }
+    }
+    for (const ir::Name& key : state.input_keys) checkKey(key);
+    for (const ir::Name& key : state.output_keys) checkKey(key);
+    for (const ir::Remap& remap : state.remapping) {
+      checkKey(remap.key);
+      checkKey(remap.parent_key);
+    }
+    for (const ir::Argument& callback : state.callbacks) checkKey(callback.key);
+    for (const ir::Argument& arg : state.args) checkTemplateArgument(state, arg.key);
+  }
+
+  /// A name that is used as it is; returns whether it is valid.
+  bool checkKey(const ir::Name& key) {
+    std::optional<std::string> problem = identifierProblem(key.text, rules_);
+    if (problem) {
+      diags_.emit(DiagKind::InvalidIdentifier, key.loc, "userdata key", key.text, rulesName(rules_),
+                  "it " + *problem);
+    }
+    return !problem;
+  }
+
+  /// A name that becomes the identifier `variable`.
+  void checkVariable(std::string_view what, const ir::Name& name, const std::string& variable) {
+    std::optional<std::string> problem = identifierProblem(variable, rules_);
+    if (!problem) return;
+    std::string reason = variable == name.text
+                             ? "it " + *problem
+                             : fmt::format("it becomes `{}`, which {}", variable, *problem);
+    diags_.emit(DiagKind::InvalidIdentifier, name.loc, what, name.text, rulesName(rules_), reason);
+  }
+
+  void checkTemplateArgument(const ir::State& state, const ir::Name& key) {
+    if (isAsciiIdentifier(key.text)) return;
+    diags_.emit(DiagKind::TemplateArgumentNotIdentifier, key.loc, key.text, state.name.text);
+  }
+
+  const ir::Module& module_;
+  DiagnosticEmitter& diags_;
+  IdentifierRules rules_;
+};
+
+}  // namespace
+
+void checkNames(const ir::Module& module, PassContext& context) {
+  NameChecker(module, context).run();
+}
+
+}  // namespace smachac::passes

@@ -1,0 +1,81 @@
+// check-userdata-usage: userdata definitions that have no effect, per container scope
+// (passes/analysis/userdata_scope.h).
+//   * overwritten-userdata  a `userdata` entry that a later entry for the same key in the same
+//                           scope replaces with a different value when the container is built,
+//                           before any state can see it (the container's entries come first,
+//                           then each child's in order)
+//   * unused-userdata-key   (off by default: -Wunused-userdata-key) a key set in a scope, by a
+//                           `userdata` entry or a child's output key, that no child reads and
+//                           the container does not output; reported at its first definition
+#include <string>
+#include <vector>
+
+#include "passes/analysis/children.h"
+#include "passes/analysis/userdata_scope.h"
+#include "passes/validate/checks.h"
+
+namespace smachac::passes {
+namespace {
+
+class UsageChecker {
+ public:
+  UsageChecker(const ir::Module& module, ir::StateId id, DiagnosticEmitter& diags)
+      : module_(module), container_(module.state(id)), scope_(module, id), diags_(diags) {}
+
+  void run() {
+    reportOverwritten();
+    reportUnused();
+  }
+
+ private:
+  void reportOverwritten() {
+    std::vector<const LiteralDef*> last(scope_.keyCount(), nullptr);
+    for (const LiteralDef& def : scope_.literals()) {
+      const LiteralDef* previous = last[def.key];
+      last[def.key] = &def;
+      if (!previous || ir::sameValue(previous->arg->value, def.arg->value)) continue;
+      diags_.emit(DiagKind::OverwrittenUserdata, previous->arg->key.loc, def.arg->key.text,
+                  definer(def.child), container_.name.text);
+      diags_.note(def.arg->key.loc, "it is set again here");
+    }
+  }
+
+  void reportUnused() {
+    std::vector<uint8_t> read(scope_.keyCount(), 0);
+    for (uint32_t child = 0; child < scope_.childCount(); ++child) {
+      for (const KeyUse& use : scope_.reads(child)) read[use.key] = 1;
+    }
+    for (const KeyUse& use : scope_.exitReads()) read[use.key] = 1;
+    for (const LiteralDef& def : scope_.literals()) reportOnce(def.key, def.arg->key, read);
+    for (uint32_t child = 0; child < scope_.childCount(); ++child) {
+      for (const KeyUse& use : scope_.writes(child)) reportOnce(use.key, *use.scope_name, read);
+    }
+  }
+
+  /// Reports `key` at `where` unless it is read or was reported; marks it reported.
+  void reportOnce(uint32_t key, const ir::Name& where, std::vector<uint8_t>& read) {
+    if (read[key]) return;
+    read[key] = 1;
+    diags_.emit(DiagKind::UnusedUserdataKey, where.loc, where.text, container_.name.text);
+  }
+
+  const std::string& definer(uint32_t child) const {
+    if (child == UserdataScope::kContainer) return container_.name.text;
+    return childName(module_, container_, child);
+  }
+
+  const ir::Module& module_;
+  const ir::State& container_;
+  UserdataScope scope_;
+  DiagnosticEmitter& diags_;
+};
+
+}  // namespace
+
+void checkUserdataUsage(const ir::Module& module, PassContext& context) {
+  for (ir::StateId id : module.preorder()) {
+    if (ir::isContainer(module.state(id).kind)) UsageChecker(module, id, context.diags).run();
+  }
+}
+
+}  // namespace smachac::passes

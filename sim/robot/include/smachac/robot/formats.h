@@ -1,0 +1,51 @@
+// The userdata formats of the robot states: how poses, offsets, joint positions, limbs and
+// frames are written as runtime Values (that is, as plain YAML data in a script).
+//
+//   pose             [[x, y, z], [qx, qy, qz, qw]]  (SMACHA's Baxter scripts; also what the
+//                    states write) or the flat [x, y, z, qx, qy, qz, qw]; metres, a quaternion
+//                    in ROS order (w last), normalised when read
+//   offset           a pose whose position is added and whose rotation, unless it is all zeros
+//                    (the scripts' [0, 0, 0, 0]), is applied after the pose's; also [x, y, z]
+//   joint positions  [s0, s1, e0, e1, w0, w1, w2] in radians (a list holding one such list is
+//                    accepted too, as Baxter's MoveToJointPositionsState did)
+//   joint points     a list of joint positions (a trajectory's waypoints)
+//   limb             "left" or "right"
+//   frame            "base" (Baxter's base, where poses for IK are given) or "world" (MuJoCo's
+//                    world; Gazebo's default); "" means world
+//
+// A value in another shape throws FormatError, whose message says what was expected.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "smachac/runtime/errors.h"
+#include "smachac/runtime/value.h"
+#include "smachac/sim/types.h"
+
+namespace smachac::robot {
+
+namespace rt = smachac::runtime;
+
+/// A userdata value or template variable in the wrong shape.
+class FormatError : public rt::Error {
+ public:
+  using rt::Error::Error;
+};
+
+auto parsePose(const rt::Value& value) -> sim::Pose;
+auto parseOffset(const rt::Value& value) -> sim::Pose;
+/// `pose` moved by `offset` (see above).
+auto applyOffset(const sim::Pose& pose, const sim::Pose& offset) -> sim::Pose;
+auto parseJointPositions(const rt::Value& value) -> sim::JointPositions;
+auto parseJointPoints(const rt::Value& value) -> std::vector<sim::JointPositions>;
+auto parseLimb(std::string_view limb) -> sim::Side;
+auto parseFrame(std::string_view frame) -> sim::Frame;
+
+/// [[x, y, z], [qx, qy, qz, qw]].
+auto poseValue(const sim::Pose& pose) -> rt::Value;
+/// [s0, s1, e0, e1, w0, w1, w2].
+auto jointsValue(const sim::JointPositions& joints) -> rt::Value;
+
+}  // namespace smachac::robot

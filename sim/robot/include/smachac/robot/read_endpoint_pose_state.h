@@ -1,0 +1,31 @@
+// ReadEndpointPoseState: reads a limb's endpoint (TCP) pose in Baxter's base frame.
+//
+//   variable   input key   meaning
+//   limb       limb        `left` or `right`
+//   -          pose        output: [[x, y, z], [qx, qy, qz, qw]] (formats.h)
+//
+// Outcomes: succeeded; preempted.
+#pragma once
+
+#include <string>
+
+#include "smachac/robot/robot_state.h"
+
+namespace smachac::robot {
+
+struct ReadEndpointPoseArgs {
+  std::string limb{};  ///< empty: input key `limb`
+};
+
+class ReadEndpointPoseState : public RobotState {
+ public:
+  ReadEndpointPoseState(RobotContext& context, ReadEndpointPoseArgs args = {});
+
+ protected:
+  auto run(rt::UserData& userdata) -> std::string override;
+
+ private:
+  ReadEndpointPoseArgs args_;
+};
+
+}  // namespace smachac::robot

@@ -1,0 +1,102 @@
+// RobotContext: what every robot state of one program shares. It owns the simulated world
+// (created once per program by BaxterBase, see baxter_base.h), the options the program was
+// started with, a log for the states' messages and the optional PNG snapshots.
+//
+// Thread-safe: the two arms of a Concurrence use it at once. Simulated time advances in
+// lockstep with the robot states that are executing: stepUntil() takes the next step only when
+// every executing robot state waits for one, so a state that computes (IK, a transition)
+// takes no simulated time and the arms of a Concurrence advance together, whatever the OS
+// scheduler does. (The world's own mutex is not fair: threads that each step in a loop can
+// starve one another for seconds of simulated time.) The log and the snapshotter have a lock
+// each.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <iosfwd>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "smachac/sim/limb.h"
+#include "smachac/sim/world.h"
+
+namespace smachac::sim {
+class Snapshotter;
+}
+
+namespace smachac::robot {
+
+/// Where BaxterBase puts both arms before the machine starts.
+enum class StartPose {
+  kNone,     ///< leave them as the scene loads them (q = 0, holding still)
+  kNeutral,  ///< baxter_interface's move_to_neutral
+  kUntuck,   ///< tuck_arms.py -u, the pick-and-place demo's start pose
+};
+
+struct RobotOptions {
+  std::string scene{};         ///< MJCF scene; empty: sim/models/scene.xml
+  std::string snapshot_dir{};  ///< write PNG snapshots here; empty: none
+  StartPose start_pose = StartPose::kNone;
+  double settle_seconds = 1.0;  ///< simulated time stepped after the machine returns
+  bool report = true;           ///< print the final scene report
+  std::ostream* log = nullptr;  ///< the states' messages; nullptr: std::cerr
+  bool quiet = false;           ///< drop the states' messages (they are still kept)
+  sim::MoveOptions move{};      ///< defaults of every arm move (speed, tolerance, timeout)
+};
+
+class RobotContext {
+ public:
+  /// A context over an already loaded world (tests build worlds themselves).
+  RobotContext(std::unique_ptr<sim::World> world, RobotOptions options = {});
+  ~RobotContext();
+  RobotContext(const RobotContext&) = delete;
+  RobotContext& operator=(const RobotContext&) = delete;
+
+  /// Loads options.scene (or the default scene) and moves to options.start_pose. Never
+  /// throws: on failure returns nullptr and sets `error`.
+  static auto create(RobotOptions options, std::string& error) -> std::unique_ptr<RobotContext>;
+
+  auto world() -> sim::World& { return *world_; }
+  auto world() const -> const sim::World& { return *world_; }
+  auto options() const -> const RobotOptions& { return options_; }
+
+  /// Steps the world until `done()` (checked under the world's lock before each step) or
+  /// `timeout` simulated seconds have passed; returns whether `done()` became true. Each step
+  /// waits until every executing robot state waits for it too.
+  auto stepUntil(const std::function<bool()>& done, double timeout) -> bool;
+
+  /// A robot state starts or stops executing (RobotState does this; see stepUntil()).
+  void beginExecution();
+  void endExecution();
+
+  /// Logs `message` for the state at `path` ("[robot] PICK_BLOCK/OPEN_GRIPPER: ...").
+  void log(std::string_view path, std::string_view message);
+  /// Every message logged so far, in order.
+  auto messages() const -> std::vector<std::string>;
+
+  /// Writes `<snapshot_dir>/<NNN>_<label>.png` when snapshots are enabled ('/' in the label
+  /// becomes '.'); returns the path, or "" when disabled or failed (failures are logged).
+  auto snapshot(std::string_view label) -> std::string;
+  /// The snapshots written so far.
+  auto snapshots() const -> std::vector<std::string>;
+
+ private:
+  std::unique_ptr<sim::World> world_;
+  RobotOptions options_;
+  std::mutex step_mutex_;
+  std::condition_variable step_cv_;
+  int executing_ = 0;        ///< robot states executing now
+  int waiting_ = 0;          ///< threads waiting for the next step
+  uint64_t generation_ = 0;  ///< steps taken through stepUntil()
+  mutable std::mutex log_mutex_;
+  std::vector<std::string> messages_;
+  mutable std::mutex snapshot_mutex_;
+  std::unique_ptr<sim::Snapshotter> snapshotter_;
+  std::vector<std::string> snapshots_;
+};
+
+}  // namespace smachac::robot

@@ -1,0 +1,136 @@
+// RobotContext: the shared world, the log and the snapshots.
+#include "smachac/robot/robot_context.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "smachac/sim/snapshot.h"
+#include "smachac/sim/standard_poses.h"
+
+namespace smachac::robot {
+namespace {
+
+constexpr double kStartMoveTimeout = 20.0;  // simulated seconds
+
+auto startJoints(StartPose pose, sim::Side side) -> sim::JointPositions {
+  return pose == StartPose::kNeutral ? sim::neutralPose(side) : sim::untuckPose(side);
+}
+
+// Moves both arms at once; false when they do not get there in time.
+auto moveBothArms(sim::World& world, StartPose pose, const sim::MoveOptions& move) -> bool {
+  sim::Limb& left = world.limb(sim::Side::kLeft);
+  sim::Limb& right = world.limb(sim::Side::kRight);
+  if (!left.startMove(startJoints(pose, sim::Side::kLeft), move) ||
+      !right.startMove(startJoints(pose, sim::Side::kRight), move)) {
+    return false;
+  }
+  return world.stepUntil([&] { return left.moveDone() && right.moveDone(); }, kStartMoveTimeout);
+}
+
+auto fileLabel(std::string_view label) -> std::string {
+  std::string name(label.empty() ? "root" : label);
+  for (char& c : name) {
+    if (c == '/' || c == ' ') c = '.';
+  }
+  return name;
+}
+
+}  // namespace
+
+RobotContext::RobotContext(std::unique_ptr<sim::World> world, RobotOptions options)
+    : world_(std::move(world)), options_(std::move(options)) {}
+
+RobotContext::~RobotContext() = default;
+
+auto RobotContext::create(RobotOptions options, std::string& error)
+    -> std::unique_ptr<RobotContext> {
+  sim::LoadResult loaded =
+      options.scene.empty() ? sim::World::loadDefault() : sim::World::load(options.scene);
+  if (!loaded.world) {
+    error = loaded.error;
+    return nullptr;
+  }
+  auto context = std::make_unique<RobotContext>(std::move(loaded.world), std::move(options));
+  const StartPose start = context->options().start_pose;
+  if (start != StartPose::kNone &&
+      !moveBothArms(context->world(), start, context->options().move)) {
+    error = "the arms did not reach their start pose";
+    return nullptr;
+  }
+  return context;
+}
+
+auto RobotContext::stepUntil(const std::function<bool()>& done, double timeout) -> bool {
+  const double deadline = world_->time() + timeout;
+  for (;;) {
+    {
+      auto guard = world_->lock();
+      if (done()) return true;
+      if (world_->time() >= deadline) return false;
+    }
+    std::unique_lock lock(step_mutex_);
+    const uint64_t seen = generation_;
+    ++waiting_;
+    step_cv_.wait(lock, [&] { return generation_ != seen || waiting_ >= executing_; });
+    if (generation_ != seen) continue;  // another thread stepped for everyone
+    world_->step(1);
+    ++generation_;
+    waiting_ = 0;
+    lock.unlock();
+    step_cv_.notify_all();
+  }
+}
+
+void RobotContext::beginExecution() {
+  std::lock_guard lock(step_mutex_);
+  ++executing_;
+}
+
+void RobotContext::endExecution() {
+  {
+    std::lock_guard lock(step_mutex_);
+    --executing_;
+  }
+  step_cv_.notify_all();  // the threads still waiting may now be all there is
+}
+
+void RobotContext::log(std::string_view path, std::string_view message) {
+  std::string line = "[robot] " + std::string(path.empty() ? "root" : path) + ": ";
+  line += message;
+  std::lock_guard guard(log_mutex_);
+  messages_.push_back(line);
+  if (!options_.quiet) (options_.log ? *options_.log : std::cerr) << line << "\n";
+}
+
+auto RobotContext::messages() const -> std::vector<std::string> {
+  std::lock_guard guard(log_mutex_);
+  return messages_;
+}
+
+auto RobotContext::snapshot(std::string_view label) -> std::string {
+  if (options_.snapshot_dir.empty()) return "";
+  std::unique_lock guard(snapshot_mutex_);
+  std::ostringstream path;
+  path << options_.snapshot_dir << "/" << std::setw(3) << std::setfill('0') << snapshots_.size()
+       << "_" << fileLabel(label) << ".png";
+  std::error_code ignored;
+  std::filesystem::create_directories(options_.snapshot_dir, ignored);
+  if (!snapshotter_) snapshotter_ = std::make_unique<sim::Snapshotter>(*world_);
+  const sim::SnapshotResult result = snapshotter_->writePng(path.str());
+  if (!result.ok) {
+    guard.unlock();
+    log(label, "snapshot failed: " + result.error);
+    return "";
+  }
+  snapshots_.push_back(path.str());
+  return path.str();
+}
+
+auto RobotContext::snapshots() const -> std::vector<std::string> {
+  std::lock_guard guard(snapshot_mutex_);
+  return snapshots_;
+}
+
+}  // namespace smachac::robot

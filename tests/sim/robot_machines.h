@@ -1,0 +1,34 @@
+// The paper's three Baxter experiments assembled with the runtime API exactly as the C++ that
+// `smachac -target=cpp` generates from examples/baxter/*.yml assembles them: one StateMachine
+// or Concurrence per container, one robot state per leaf, the scripts' names, transitions,
+// remappings and userdata. A sub-script included several times is built by one function
+// (generated code repeats it at each inclusion).
+#pragma once
+
+#include <memory>
+
+#include "smachac/robot/robot.h"
+#include "smachac/runtime/runtime.h"
+
+namespace smachac::robot::test {
+
+namespace rt = smachac::runtime;
+
+/// A context over a freshly loaded default scene; its log is kept but not printed.
+auto makeRobot(RobotOptions options = {}) -> std::unique_ptr<RobotContext>;
+
+/// examples/baxter/pick_and_place.yml
+auto buildPickAndPlace(RobotContext& robot) -> std::unique_ptr<rt::StateMachine>;
+/// examples/baxter/stacking.yml
+auto buildStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine>;
+/// examples/baxter/dual_arm_stacking.yml
+auto buildDualArmStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine>;
+
+/// examples/baxter/sub/pick_block.yml included in `parent` as `label`.
+void addPickBlock(rt::StateMachine& parent, RobotContext& robot, const std::string& label,
+                  rt::Transitions transitions, rt::Remapping remapping);
+/// examples/baxter/sub/place_block.yml included in `parent` as `label`.
+void addPlaceBlock(rt::StateMachine& parent, RobotContext& robot, const std::string& label,
+                   rt::Transitions transitions, rt::Remapping remapping);
+
+}  // namespace smachac::robot::test

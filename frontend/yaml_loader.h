@@ -1,5 +1,5 @@
-// Reads a YAML file into an ir::Value tree whose every node and mapping key carries its
-// file:line:col. Checks before parsing: the path is a readable regular file, not larger than
+// Reads a YAML file into an ir::Value tree (yaml_events.h) whose every node and mapping key carries
+// its file:line:col. Checks before parsing: the path is a readable regular file, not larger than
 // kMaxScriptBytes, valid UTF-8 without NUL bytes. While converting: mapping keys are scalars
 // and unique, integers fit in 64 bits, nesting and total size (alias expansion) are bounded.
 // Every problem is a located diagnostic; the result is empty when the file cannot be used.
@@ -15,8 +15,6 @@
 namespace smachac::frontend {
 
 inline constexpr size_t kMaxScriptBytes = 32u << 20;
-inline constexpr size_t kMaxYamlDepth = 1000;  ///< yaml-cpp itself stops at 2000
-inline constexpr size_t kMaxYamlNodes = 4'000'000;
 
 struct LoadedYaml {
   uint32_t file = 0;

@@ -1,6 +1,7 @@
 // The target table.
 #include "backends/targets.h"
 
+#include "backends/smach/smach_target.h"
 #include "ir/json.h"
 #include "ir/printer.h"
 
@@ -18,6 +19,7 @@ std::optional<std::vector<OutputFile>> emitIrJson(const ir::Module& m, EmitConte
 constexpr Target kTargets[] = {
     {"ir", "the IR in its stable text form", &emitIrText},
     {"json", "the IR as JSON (format smachac-ir, version 1)", &emitIrJson},
+    {"smach", "SMACH Python, rendered from SMACHA-compatible templates", &smach::emitSmach},
 };
 
 }  // namespace

@@ -28,7 +28,7 @@ struct OutputFile {
 };
 
 struct EmitContext {
-  const SourceManager& sources;
+  SourceManager& sources;  ///< code targets add the templates that diagnostics quote
   DiagnosticEmitter& diags;
   const EmitOptions& options;
 };

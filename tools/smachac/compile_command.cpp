@@ -33,7 +33,7 @@ std::string targetNames() {
 void setUp(CLI::App& app, CompileOptions& o) {
   app.description(
       "smachac: a compiler for SMACHA state-machine scripts.\n"
-      "Subcommands: lint, render (run `smachac <subcommand> --help`).");
+      "Subcommands: lint, render, help, contain, extract (run `smachac <subcommand> --help`).");
   app.set_version_flag("--version", fmt::format("smachac {}", kVersion));
   app.add_option("inputs", o.inputs, "script files")->type_name("SCRIPT");
   app.add_option("--target", o.common.target, "output target: " + targetNames());

@@ -1,0 +1,221 @@
+// Environment: template loading and caching, and the SMACHA operations built on the renderer
+// (render, renderBlock, listBlocks, moduleVariables, metaBlock).
+#include "backends/tmpl/environment.h"
+
+#include <algorithm>
+#include <functional>
+#include <new>
+#include <set>
+
+#include "backends/tmpl/environment_impl.h"
+#include "backends/tmpl/render.h"
+#include "backends/tmpl/unicode.h"
+#include "templates/builtin_templates.h"
+
+namespace smachac::tmpl {
+
+EnvironmentImpl::EnvironmentImpl(std::vector<std::string> dirs,
+                                 std::vector<std::string> builtinSets,
+                                 std::span<const EmbeddedFile> builtins)
+    : loader_(std::move(dirs), std::move(builtinSets), builtins) {}
+
+EnvironmentImpl::~EnvironmentImpl() {
+  clearModules();
+  for (const Ref<Context>& ctx : keptContexts_) ctx->clear();
+  for (const Ref<Frame>& frame : keptFrames_) frame->clearSlots();
+}
+
+const Template& EnvironmentImpl::load(std::string_view name) {
+  auto it = templates_.find(name);
+  if (it != templates_.end()) return *it->second;
+  std::optional<TemplateSource> source = loader_.load(name);
+  if (!source) {
+    fail("template `" + std::string(name) + "` not found; looked in " +
+         loader_.searchDescription());
+  }
+  auto compiled =
+      std::make_unique<Template>(std::string(name), source->origin, source->text, registry_);
+  const Template& result = *compiled;
+  templates_.emplace(std::string(name), std::move(compiled));
+  return result;
+}
+
+const std::vector<const std::string*>& EnvironmentImpl::reachableBlocks(const Template& tmpl) {
+  if (auto it = reachable_.find(&tmpl); it != reachable_.end()) return it->second;
+  std::set<std::string> names;
+  std::set<const Template*> seen;
+  std::function<void(const Template&)> visit = [&](const Template& t) {
+    if (!seen.insert(&t).second) return;
+    for (const BlockStmt* b : t.blocks()) names.insert(*b->name);
+    for (const auto& [ref, pos] : t.references()) {
+      const Template* referenced = nullptr;
+      try {
+        referenced = &load(ref);
+      } catch (const Fault& fault) {
+        throw t.error(pos, fault.message());
+      }
+      visit(*referenced);
+    }
+  };
+  visit(tmpl);
+  std::vector<const std::string*> out;
+  for (const std::string& n : names) out.push_back(intern(n));
+  return reachable_.emplace(&tmpl, std::move(out)).first->second;
+}
+
+const std::vector<const std::string*>& EnvironmentImpl::reachableByAddress(const Template& tmpl) {
+  if (auto it = reachableByAddress_.find(&tmpl); it != reachableByAddress_.end()) return it->second;
+  std::vector<const std::string*> names = reachableBlocks(tmpl);
+  std::sort(names.begin(), names.end());
+  return reachableByAddress_.emplace(&tmpl, std::move(names)).first->second;
+}
+
+void EnvironmentImpl::clearModules() {
+  for (const auto& [name, tmpl] : templates_) {
+    for (const auto& mask : tmpl->skipMasks()) mask->module = Value();
+  }
+}
+
+namespace {
+
+SkipPolicy explicitSkips(const RenderOptions& options) {
+  SkipPolicy policy;
+  for (const std::string& name : options.skipBlocks) policy.names.push_back(intern(name));
+  return policy;
+}
+
+Value contextDict(const Value& context) {
+  if (context.isDict()) return context;
+  if (context.isUndefined() || context.isNone()) return Value::newDict();
+  fail("the render context must be a dict, not `" + std::string(kindName(context.kind())) + "`");
+}
+
+// Runs `body`, turning location-less faults into errors about template `name`.
+template <class F>
+auto guarded(std::string_view name, F&& body) -> decltype(body()) {
+  try {
+    return body();
+  } catch (const Fault& fault) {
+    throw TemplateError(std::string(name), 0, 0, fault.message());
+  } catch (const std::bad_alloc&) {
+    throw TemplateError(std::string(name), 0, 0, "out of memory");
+  }
+}
+
+std::string renderWith(EnvironmentImpl& env, std::string_view name, const Value& context,
+                       const SkipPolicy& policy) {
+  Exec ex(env, policy);
+  const Template& tmpl = env.load(name);
+  Ref<Context> ctx = newContext(ex, tmpl, contextDict(context));
+  std::string out;
+  out.reserve(256);
+  renderRoot(ex, tmpl, *ctx, out);
+  return out;
+}
+
+}  // namespace
+
+Environment::Environment(std::vector<std::string> templateDirs,
+                         std::vector<std::string> builtinSets)
+    : Environment(std::move(templateDirs), std::move(builtinSets), templates::builtinTemplates()) {}
+
+Environment::Environment(std::vector<std::string> templateDirs,
+                         std::vector<std::string> builtinSets,
+                         std::span<const EmbeddedFile> builtins)
+    : impl_(std::make_unique<EnvironmentImpl>(std::move(templateDirs), std::move(builtinSets),
+                                              builtins)) {}
+
+Environment::~Environment() = default;
+
+std::string Environment::render(std::string_view name, const Value& context,
+                                const RenderOptions& options) {
+  return guarded(name, [&] { return renderWith(*impl_, name, context, explicitSkips(options)); });
+}
+
+std::string Environment::renderBlock(std::string_view name, std::string_view block,
+                                     const Value& context, const RenderOptions& options) {
+  return guarded(name, [&] {
+    SkipPolicy policy = explicitSkips(options);
+    policy.only = intern(block);
+    policy.scope = &impl_->reachableByAddress(impl_->load(name));
+    std::string out = renderWith(*impl_, name, context, policy);
+    std::string_view stripped = unicode::strip(out);
+    if (stripped.empty()) return std::string();
+    size_t begin = static_cast<size_t>(stripped.data() - out.data());
+    out.resize(begin + stripped.size());
+    out.erase(0, begin);
+    out += '\n';
+    return out;
+  });
+}
+
+std::vector<std::string> Environment::listBlocks(std::string_view name) {
+  return guarded(name, [&] {
+    std::vector<std::string> out;
+    for (const std::string* n : impl_->reachableBlocks(impl_->load(name))) out.push_back(*n);
+    return out;
+  });
+}
+
+std::vector<std::pair<std::string, Value>> Environment::moduleVariables(
+    std::string_view name, const Value& context, const RenderOptions& options) {
+  return guarded(name, [&] {
+    SkipPolicy policy = explicitSkips(options);
+    Exec ex(*impl_, policy, /*keep=*/true);
+    const Template& tmpl = impl_->load(name);
+    Ref<Context> ctx = newContext(ex, tmpl, contextDict(context));
+    std::string out;
+    renderRoot(ex, tmpl, *ctx, out);
+    std::vector<std::pair<std::string, Value>> vars;
+    for (const std::string* exported : ctx->exported()) {
+      for (const auto& [n, v] : ctx->vars()) {
+        if (n == exported) vars.emplace_back(*n, v);
+      }
+    }
+    std::sort(vars.begin(), vars.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    return vars;
+  });
+}
+
+std::optional<std::string> Environment::metaBlock(std::string_view name) {
+  return guarded(name, [&]() -> std::optional<std::string> {
+    const Template& tmpl = impl_->load(name);
+    if (!tmpl.block("meta")) return std::nullopt;
+    SkipPolicy policy;
+    Exec ex(*impl_, policy);
+    Ref<Context> ctx = newContext(ex, tmpl, Value::newDict());
+    for (size_t i = 0; i < ctx->blocks().size(); ++i) {
+      if (*ctx->blocks()[i].name != "meta") continue;
+      std::string out;
+      renderBlockAt(ex, *ctx, i, out);
+      return out;
+    }
+    return std::nullopt;
+  });
+}
+
+std::optional<std::string> Environment::resolveScriptTemplate(std::string_view name) const {
+  return impl_->loader().resolveScriptName(name);
+}
+
+bool Environment::hasTemplate(std::string_view name) const { return impl_->exists(name); }
+
+void Environment::addTemplate(std::string name, std::string source) {
+  impl_->loader().addMemory(std::move(name), std::move(source));
+}
+
+void Environment::addFilter(std::string name, CustomFilter fn) {
+  impl_->registry().addFilter(std::move(name), std::move(fn));
+}
+
+void Environment::addTest(std::string name, CustomTest fn) {
+  impl_->registry().addTest(std::move(name), std::move(fn));
+}
+
+void Environment::addGlobal(std::string name, Value value) {
+  impl_->registry().addGlobal(std::move(name), std::move(value));
+  impl_->clearModules();
+}
+
+}  // namespace smachac::tmpl

@@ -1,0 +1,82 @@
+// The template engine's public API. An Environment finds templates (user directories, then
+// built-in sets), compiles each once, and renders them with SMACHA's Jinja2 settings
+// (lstrip_blocks, no trim_blocks, `do`, SMACHA's tests and filter). It also provides the
+// operations SMACHA's generator needs: rendering one block in isolation, listing blocks,
+// exporting module variables and reading the `meta` block. See backends/tmpl/README.md.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "backends/tmpl/builtins.h"
+#include "backends/tmpl/call_args.h"
+#include "backends/tmpl/error.h"
+#include "backends/tmpl/value.h"
+#include "ir/support/embedded_file.h"
+
+namespace smachac::tmpl {
+
+class EnvironmentImpl;
+
+struct RenderOptions {
+  /// Blocks removed from every template of the render, with their contents, as if absent
+  /// (SMACHA's SkipBlockExtension; e.g. `meta`, `upper_comments`, `spin`).
+  std::vector<std::string> skipBlocks;
+};
+
+class Environment {
+ public:
+  /// `templateDirs` are searched in order before the built-in sets, which are prefixes into
+  /// the embedded template table (e.g. {"smach/", "smach_ros/"}).
+  Environment(std::vector<std::string> templateDirs, std::vector<std::string> builtinSets);
+  /// The same with an explicit embedded table (tests).
+  Environment(std::vector<std::string> templateDirs, std::vector<std::string> builtinSets,
+              std::span<const EmbeddedFile> builtins);
+  ~Environment();
+  Environment(const Environment&) = delete;
+  Environment& operator=(const Environment&) = delete;
+
+  /// Renders template `name` (an exact template name) with `context` (a dict).
+  std::string render(std::string_view name, const Value& context,
+                     const RenderOptions& options = {});
+
+  /// Renders the whole template with every other block of it (and of everything it extends,
+  /// includes or imports) removed, then strips the result and appends "\n" if non-empty.
+  std::string renderBlock(std::string_view name, std::string_view block, const Value& context,
+                          const RenderOptions& options = {});
+
+  /// The sorted names of the blocks of `name` and of every template it references through
+  /// extends, include, import and from-import (string literals), recursively.
+  std::vector<std::string> listBlocks(std::string_view name);
+
+  /// The exported top-level variables and macros of `name` after running it with `context`,
+  /// sorted by name (names starting with `_` are never exported).
+  std::vector<std::pair<std::string, Value>> moduleVariables(std::string_view name,
+                                                             const Value& context,
+                                                             const RenderOptions& options = {});
+
+  /// The text of the template's own `meta` block rendered with an empty context, or nullopt.
+  std::optional<std::string> metaBlock(std::string_view name);
+
+  /// Resolves a script-level template name: in each directory (then each built-in set) in
+  /// order, `Foo`, `Foo.tpl.py`, `Foo.tpl`, then the first `Foo.tpl.<ext>` alphabetically.
+  std::optional<std::string> resolveScriptTemplate(std::string_view name) const;
+  bool hasTemplate(std::string_view name) const;
+
+  /// Adds an in-memory template, found before any directory (tests, generated templates).
+  void addTemplate(std::string name, std::string source);
+
+  void addFilter(std::string name, CustomFilter fn);
+  void addTest(std::string name, CustomTest fn);
+  void addGlobal(std::string name, Value value);
+
+ private:
+  std::unique_ptr<EnvironmentImpl> impl_;
+};
+
+}  // namespace smachac::tmpl

@@ -1,0 +1,60 @@
+// Internals of Environment shared with the renderer: the registry, the loader, and the caches
+// of compiled templates, default modules and reachable block names.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "backends/tmpl/builtins.h"
+#include "backends/tmpl/loader.h"
+#include "backends/tmpl/runtime.h"
+#include "backends/tmpl/template.h"
+
+namespace smachac::tmpl {
+
+class EnvironmentImpl {
+ public:
+  EnvironmentImpl(std::vector<std::string> dirs, std::vector<std::string> builtinSets,
+                  std::span<const EmbeddedFile> builtins);
+
+  /// The compiled template `name`; raises Fault if it does not exist, TemplateError if it
+  /// does not compile.
+  const Template& load(std::string_view name);
+  bool exists(std::string_view name) const { return loader_.exists(name); }
+  /// Sorted, unique names of the blocks reachable from `tmpl` (see Environment::listBlocks).
+  const std::vector<const std::string*>& reachableBlocks(const Template& tmpl);
+  /// The same names sorted by address (for SkipPolicy::scope).
+  const std::vector<const std::string*>& reachableByAddress(const Template& tmpl);
+  /// Forgets the cached default modules (after globals change).
+  void clearModules();
+  ~EnvironmentImpl();
+  /// Objects that cached modules or returned values may still use; their reference cycles
+  /// are broken when the environment is destroyed.
+  void keep(Context* ctx) { keptContexts_.emplace_back(ctx); }
+  void keep(Frame* frame) { keptFrames_.emplace_back(frame); }
+
+  Registry& registry() { return registry_; }
+  Loader& loader() { return loader_; }
+
+ private:
+  Registry registry_;
+  Loader loader_;
+  struct NameHash {
+    using is_transparent = void;
+    size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
+  std::unordered_map<std::string, std::unique_ptr<Template>, NameHash, std::equal_to<>> templates_;
+  std::unordered_map<const Template*, std::vector<const std::string*>> reachable_;
+  std::unordered_map<const Template*, std::vector<const std::string*>> reachableByAddress_;
+  std::vector<Ref<Context>> keptContexts_;
+  std::vector<Ref<Frame>> keptFrames_;
+};
+
+inline const Registry& registryOf(EnvironmentImpl& env) { return env.registry(); }
+
+}  // namespace smachac::tmpl

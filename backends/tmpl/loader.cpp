@@ -1,0 +1,155 @@
+// Template lookup in memory, directories and the embedded built-in sets (see loader.h).
+#include "backends/tmpl/loader.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "backends/tmpl/error.h"
+
+namespace smachac::tmpl {
+namespace fs = std::filesystem;
+
+std::optional<std::string> normalizeTemplateName(std::string_view name) {
+  std::string out;
+  size_t start = 0;
+  while (start <= name.size()) {
+    size_t end = name.find('/', start);
+    if (end == std::string_view::npos) end = name.size();
+    std::string_view piece = name.substr(start, end - start);
+    if (piece == ".." || piece.find('\\') != std::string_view::npos) return std::nullopt;
+    if (!piece.empty() && piece != ".") {
+      if (!out.empty()) out += '/';
+      out += piece;
+    }
+    start = end + 1;
+  }
+  if (out.empty()) return std::nullopt;
+  return out;
+}
+
+Loader::Loader(std::vector<std::string> dirs, std::vector<std::string> builtinSets,
+               std::span<const EmbeddedFile> builtins)
+    : dirs_(std::move(dirs)), builtinSets_(std::move(builtinSets)) {
+  for (std::string& set : builtinSets_) {
+    if (!set.empty() && set.back() != '/') set += '/';
+  }
+  for (const EmbeddedFile& file : builtins) builtins_.emplace(std::string(file.path), file.content);
+}
+
+void Loader::addMemory(std::string name, std::string text) {
+  memory_.insert_or_assign(std::move(name), std::move(text));
+}
+
+std::optional<TemplateSource> Loader::load(std::string_view rawName) const {
+  if (auto it = memory_.find(rawName); it != memory_.end())
+    return TemplateSource{it->first, it->second};
+  std::optional<std::string> name = normalizeTemplateName(rawName);
+  if (!name) return std::nullopt;
+  for (const std::string& dir : dirs_) {
+    fs::path path = fs::path(dir) / *name;
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) continue;
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) fail("cannot read template file `" + path.string() + "`");
+    return TemplateSource{path.lexically_normal().string(), text.str()};
+  }
+  for (const std::string& set : builtinSets_) {
+    if (auto it = builtins_.find(set + *name); it != builtins_.end()) {
+      return TemplateSource{"<builtin>/" + it->first, std::string(it->second)};
+    }
+  }
+  return std::nullopt;
+}
+
+bool Loader::exists(std::string_view rawName) const {
+  if (memory_.count(rawName)) return true;
+  std::optional<std::string> name = normalizeTemplateName(rawName);
+  if (!name) return false;
+  for (const std::string& dir : dirs_) {
+    std::error_code ec;
+    if (fs::is_regular_file(fs::path(dir) / *name, ec)) return true;
+  }
+  return std::any_of(builtinSets_.begin(), builtinSets_.end(),
+                     [&](const std::string& set) { return builtins_.count(set + *name) > 0; });
+}
+
+std::vector<std::string> Loader::listDir(const std::string& dir, std::string_view subdir) const {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (fs::directory_iterator it(fs::path(dir) / subdir, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    if (it->is_regular_file(ec)) names.push_back(it->path().filename().string());
+  }
+  return names;
+}
+
+// Picks `base`, `base.tpl.py`, `base.tpl`, then the first `base.tpl.<ext>` among `entries`.
+std::optional<std::string> Loader::resolveIn(const std::vector<std::string>& entries,
+                                             std::string_view base) const {
+  auto has = [&](const std::string& n) {
+    return std::find(entries.begin(), entries.end(), n) != entries.end();
+  };
+  std::string b(base);
+  for (const std::string& candidate : {b, b + ".tpl.py", b + ".tpl"}) {
+    if (has(candidate)) return candidate;
+  }
+  std::string prefix = b + ".tpl.";
+  std::optional<std::string> best;
+  for (const std::string& e : entries) {
+    if (e.size() <= prefix.size() || e.compare(0, prefix.size(), prefix) != 0) continue;
+    std::string_view ext = std::string_view(e).substr(prefix.size());
+    bool word = std::all_of(ext.begin(), ext.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+    if (word && (!best || e < *best)) best = e;
+  }
+  return best;
+}
+
+std::optional<std::string> Loader::resolveScriptName(std::string_view rawName) const {
+  std::optional<std::string> name = normalizeTemplateName(rawName);
+  if (!name) return std::nullopt;
+  size_t slash = name->rfind('/');
+  std::string subdir = slash == std::string::npos ? "" : name->substr(0, slash + 1);
+  std::string base = slash == std::string::npos ? *name : name->substr(slash + 1);
+  std::vector<std::string> memoryEntries;
+  for (const auto& [n, text] : memory_) {
+    if (n.compare(0, subdir.size(), subdir) == 0 &&
+        n.find('/', subdir.size()) == std::string::npos) {
+      memoryEntries.push_back(n.substr(subdir.size()));
+    }
+  }
+  if (auto found = resolveIn(memoryEntries, base)) return subdir + *found;
+  for (const std::string& dir : dirs_) {
+    if (auto found = resolveIn(listDir(dir, subdir), base)) return subdir + *found;
+  }
+  for (const std::string& set : builtinSets_) {
+    std::string prefix = set + subdir;
+    std::vector<std::string> entries;
+    for (auto it = builtins_.lower_bound(prefix); it != builtins_.end(); ++it) {
+      if (it->first.compare(0, prefix.size(), prefix) != 0) break;
+      std::string rest = it->first.substr(prefix.size());
+      if (rest.find('/') == std::string::npos) entries.push_back(rest);
+    }
+    if (auto found = resolveIn(entries, base)) return subdir + *found;
+  }
+  return std::nullopt;
+}
+
+std::string Loader::searchDescription() const {
+  std::string out;
+  auto add = [&](const std::string& s) {
+    if (!out.empty()) out += ", ";
+    out += s;
+  };
+  for (const std::string& dir : dirs_) add("`" + dir + "`");
+  for (const std::string& set : builtinSets_) add("built-in `" + set + "`");
+  if (out.empty()) out = "no template directories";
+  return out;
+}
+
+}  // namespace smachac::tmpl

@@ -1,0 +1,52 @@
+// Finding template sources: in-memory templates, then the user's template directories in
+// order, then the built-in sets of the embedded table. Exact names (`State.tpl.py`) and
+// script-level names (`State` -> `State.tpl.py`, `State.tpl` or `State.tpl.<ext>`).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ir/support/embedded_file.h"
+
+namespace smachac::tmpl {
+
+struct TemplateSource {
+  std::string origin;  // what errors name: a file path or `<builtin>/smach/State.tpl.py`
+  std::string text;
+};
+
+class Loader {
+ public:
+  Loader(std::vector<std::string> dirs, std::vector<std::string> builtinSets,
+         std::span<const EmbeddedFile> builtins);
+
+  /// The source of the template with exactly this name, searched in order. Raises Fault if a
+  /// file exists but cannot be read.
+  std::optional<TemplateSource> load(std::string_view name) const;
+  bool exists(std::string_view name) const;
+  /// Resolves a script-level name to a template name (see header comment).
+  std::optional<std::string> resolveScriptName(std::string_view name) const;
+  /// "`dir1`, `dir2`, built-in `smach/`": where templates are looked for.
+  std::string searchDescription() const;
+  void addMemory(std::string name, std::string text);
+
+ private:
+  std::optional<std::string> resolveIn(const std::vector<std::string>& entries,
+                                       std::string_view name) const;
+  std::vector<std::string> listDir(const std::string& dir, std::string_view subdir) const;
+
+  std::vector<std::string> dirs_;
+  std::vector<std::string> builtinSets_;
+  std::map<std::string, std::string_view, std::less<>> builtins_;
+  std::map<std::string, std::string, std::less<>> memory_;
+};
+
+/// Normalises a template name like Jinja2's split_template_path; nullopt if it escapes the
+/// search directories (`..`) or is empty.
+std::optional<std::string> normalizeTemplateName(std::string_view name);
+
+}  // namespace smachac::tmpl

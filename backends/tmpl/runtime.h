@@ -1,0 +1,297 @@
+// Run-time structures of a render: the execution state (Exec), contexts (Jinja's Context:
+// template-level variables, the render variables and the block table), frames of local
+// slots, and the objects templates can hold (macros, `loop`, modules, `super`).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "backends/tmpl/ast.h"
+#include "backends/tmpl/builtins.h"
+#include "backends/tmpl/call_args.h"
+#include "backends/tmpl/template.h"
+#include "backends/tmpl/value.h"
+
+namespace smachac::tmpl {
+
+class EnvironmentImpl;
+
+/// Which blocks a render removes, as SMACHA's SkipBlockExtension does.
+struct SkipPolicy {
+  std::vector<const std::string*> names;  // always skipped
+  const std::string* only = nullptr;      // renderBlock: skip every name in `scope` but this
+  const std::vector<const std::string*>* scope = nullptr;  // sorted by address
+
+  bool skips(const std::string* name) const {
+    size_t slot = (reinterpret_cast<uintptr_t>(name) >> 4) & (kMemo - 1);
+    if (memo_[slot].first != name) memo_[slot] = {name, decide(name)};
+    return memo_[slot].second;
+  }
+  bool skipsBlock(const BlockStmt& block) const {
+    return skips(block.name) || (!block.enclosing.empty() && skipsEnclosing(block));
+  }
+
+ private:
+  static constexpr size_t kMemo = 16;
+  bool decide(const std::string* name) const;
+  bool skipsEnclosing(const BlockStmt& block) const;
+  mutable std::pair<const std::string*, bool> memo_[kMemo] = {};
+};
+
+struct BlockEntry {
+  const std::string* name;
+  const Template* tmpl;
+  const BlockStmt* block;
+};
+
+/// Jinja's Context: what every frame of one template render resolves unknown names from.
+/// A context derived for an include (or an import with context) sees its includer's variables
+/// through `outer` instead of Jinja's copy of them.
+class Context final : public Object {
+ public:
+  explicit Context(Value parent) : parent_(std::move(parent)) { vars_.reserve(16); }
+  Context(Ref<Context> outer, std::vector<std::pair<const std::string*, Value>> locals)
+      : outer_(std::move(outer)), locals_(std::move(locals)) {}
+
+  /// Template-level variables, then the parent's, then globals; `missing` otherwise.
+  Value resolve(const std::string* name, size_t hash, const Registry& registry) const;
+  void setVar(const std::string* name, Value value);
+  void exportName(const std::string* name);
+  void unexportName(const std::string* name);
+
+  /// Drops everything the context holds (breaks reference cycles through macros).
+  void clear();
+  const std::vector<std::pair<const std::string*, Value>>& vars() const { return vars_; }
+  const std::vector<const std::string*>& exported() const { return exported_; }
+  std::vector<BlockEntry>& blocks() { return blocks_; }
+
+ private:
+  const Value* find(const std::string* name, size_t hash) const;
+
+  Value parent_;
+  Ref<Context> outer_;
+  std::vector<std::pair<const std::string*, Value>> locals_;
+  std::vector<std::pair<const std::string*, Value>> vars_;
+  std::vector<const std::string*> exported_;
+  std::vector<BlockEntry> blocks_;
+};
+
+/// Local variable slots of one scope level; `parent` is the enclosing level. The slots are
+/// stored inline (one allocation per frame).
+class Frame final : public Object {
+ public:
+  static Ref<Frame> make(Frame* parent, Context* context, uint16_t numSlots);
+  /// Constructs a frame in `memory` (room for the slots after it); see FrameHolder.
+  static Frame* placeAt(void* memory, Frame* parent, Context* context, uint16_t numSlots);
+  ~Frame() override;
+  static void operator delete(void* p) { ::operator delete(p); }
+
+  Value& slot(SlotRef ref) {
+    Frame* f = this;
+    for (uint16_t i = 0; i < ref.up; ++i) f = f->parent_.get();
+    return f->slots()[ref.slot];
+  }
+  Value& local(uint16_t index) { return slots()[index]; }
+  Frame* parent() const { return parent_.get(); }
+  Context& context() const { return *context_; }
+  /// Unbinds every slot (breaks reference cycles through macros defined at this level).
+  void clearSlots();
+
+ private:
+  Frame(Frame* parent, Context* context, uint16_t numSlots)
+      : parent_(parent), context_(context), numSlots_(numSlots) {}
+  friend class FrameHolder;
+  Value* slots() { return reinterpret_cast<Value*>(this + 1); }
+
+  Ref<Frame> parent_;
+  Ref<Context> context_;
+  uint16_t numSlots_;
+};
+
+/// The frame of one scope level, allocated on the stack when nothing can keep it alive
+/// beyond the scope (no macro defined at that level or below) and it is small.
+class FrameHolder {
+ public:
+  FrameHolder(Exec& ex, Frame* parent, Context* context, const FrameLayout& layout);
+  ~FrameHolder();
+  FrameHolder(const FrameHolder&) = delete;
+  FrameHolder& operator=(const FrameHolder&) = delete;
+  Frame* get() const { return frame_; }
+  Frame* operator->() const { return frame_; }
+  Frame& operator*() const { return *frame_; }
+
+ private:
+  static constexpr size_t kInlineSlots = 12;
+  Frame* frame_;
+  Ref<Frame> heap_;
+  alignas(std::max_align_t) unsigned char storage_[2 * sizeof(void*) + 16 +
+                                                   kInlineSlots * sizeof(Value) + 32];
+};
+
+/// The state of one top-level render call.
+class Exec {
+ public:
+  /// `keep`: objects that macros may keep alive outlive the call (moduleVariables);
+  /// otherwise the reference cycles they form are broken when the Exec ends.
+  Exec(EnvironmentImpl& env, const SkipPolicy& skip, bool keep = false);
+  ~Exec();
+  Exec(const Exec&) = delete;
+  Exec& operator=(const Exec&) = delete;
+
+  EnvironmentImpl& env;
+  const Registry& registry;
+  const SkipPolicy& skip;
+  const Template* tmpl = nullptr;  // the template whose code runs (for error locations)
+  int depth = 0;
+
+  void step();
+  /// Records a context or a capturable frame (see the constructor's `keep`).
+  Context* adopt(Context* ctx);
+  void adopt(Frame* frame);
+  /// While positive, adopted objects belong to the environment's module cache.
+  int moduleDepth = 0;
+  /// Raises Fault when the native stack is close to exhaustion.
+  void checkStack() const;
+  /// This call's default modules, by template (a cache in front of the environment's).
+  SmallVector<std::pair<const Template*, Value>, 4> modules;
+  /// Which blocks of `templ` this call's skip policy removes, by BlockStmt::index.
+  const std::vector<char>& skipMask(const Template& templ) { return policyEntry(templ).skipped; }
+  /// The per-(template, skip policy) cache entry (skipped blocks, default module).
+  SkipMask& policyEntry(const Template& templ) {
+    return lastTemplate_ == &templ ? *lastMask_ : findPolicyEntry(templ);
+  }
+
+ private:
+  SkipMask& findPolicyEntry(const Template& templ);
+  SmallVector<std::pair<const Template*, SkipMask*>, 8> masks_;
+  const Template* lastTemplate_ = nullptr;
+  SkipMask* lastMask_ = nullptr;
+  std::vector<std::unique_ptr<SkipMask>> ownMasks_;
+  static constexpr size_t kMaxCachedPolicies = 256;
+
+ public:
+ private:
+  uint64_t steps_ = 0;
+  uintptr_t stackBase_;
+  bool keep_;
+  SmallVector<Ref<Context>, 6> contexts_;
+  SmallVector<Ref<Frame>, 4> frames_;
+};
+
+/// Enters a template, macro or block: bounds the depth and switches the error location.
+class CallGuard {
+ public:
+  CallGuard(Exec& ex, const Template* tmpl);
+  ~CallGuard();
+  CallGuard(const CallGuard&) = delete;
+  CallGuard& operator=(const CallGuard&) = delete;
+
+ private:
+  Exec& ex_;
+  const Template* saved_;
+};
+
+struct RootState {
+  const Template* parent = nullptr;  // set by `extends`
+  uint32_t extendsPos = 0;           // where, for errors while entering the parent
+};
+
+/// Where statements run: the frame, the output buffer and the top-level flags.
+struct Site {
+  Frame* frame;
+  std::string* out;
+  RootState* root = nullptr;  // template root code (also inside its loops)
+  bool toplevel = false;      // assignments export to the context
+  bool outputCheck = false;   // output stops once `extends` ran
+
+  bool suppressed() const { return outputCheck && root && root->parent; }
+  Site inner(Frame* f) const { return Site{f, out, root, false, outputCheck}; }
+};
+
+// --- objects --------------------------------------------------------------------------------
+
+class MacroObject final : public Object {
+ public:
+  MacroObject(const Template* tmpl, const MacroStmt* node, Ref<Frame> closure)
+      : tmpl_(tmpl), node_(node), closure_(std::move(closure)) {}
+  std::string_view typeName() const override { return "Macro"; }
+  void repr(std::string& out) const override;
+  bool isCallable() const override { return true; }
+  Value call(Exec& ex, const CallArgs& args) const override;
+  /// Renders the macro's output straight into `out` (what `{{ m() }}` prints).
+  void callInto(Exec& ex, const CallArgs& args, std::string& out) const;
+
+ private:
+  const Template* tmpl_;
+  const MacroStmt* node_;
+  Ref<Frame> closure_;
+};
+
+/// `super`: renders the next block of the same name in the context's block table.
+class BlockRefObject final : public Object {
+ public:
+  BlockRefObject(Ref<Context> ctx, size_t index) : ctx_(std::move(ctx)), index_(index) {}
+  std::string_view typeName() const override { return "BlockReference"; }
+  bool getAttr(std::string_view name, Value& out) const override;
+  bool isCallable() const override { return true; }
+  Value call(Exec& ex, const CallArgs& args) const override;
+
+ private:
+  Ref<Context> ctx_;
+  size_t index_;
+};
+
+class ModuleObject final : public Object {
+ public:
+  ModuleObject(const Template* tmpl, std::vector<std::pair<const std::string*, Value>> exports,
+               std::string body)
+      : tmpl_(tmpl), exports_(std::move(exports)), body_(std::move(body)) {}
+  std::string_view typeName() const override { return "TemplateModule"; }
+  void repr(std::string& out) const override;
+  void str(std::string& out) const override { out += body_; }
+  bool getAttr(std::string_view name, Value& out) const override;
+  /// getAttr for an interned name; `hint` is the index where it was found before.
+  bool getExport(const std::string* name, size_t& hint, Value& out) const;
+  const std::string& body() const { return body_; }
+  const Template* tmpl() const { return tmpl_; }
+  const std::vector<std::pair<const std::string*, Value>>& exports() const { return exports_; }
+
+ private:
+  const Template* tmpl_;
+  std::vector<std::pair<const std::string*, Value>> exports_;
+  std::string body_;
+};
+
+/// A method bound to a value (`items.append` not called immediately).
+class MethodObject final : public Object {
+ public:
+  MethodObject(Value self, std::string name) : self_(std::move(self)), name_(std::move(name)) {}
+  std::string_view typeName() const override { return "builtin_function_or_method"; }
+  void repr(std::string& out) const override;
+  bool isCallable() const override { return true; }
+  Value call(Exec& ex, const CallArgs& args) const override;
+
+ private:
+  Value self_;
+  std::string name_;
+};
+
+/// A global function (`range`, `dict`, ...).
+class FunctionObject final : public Object {
+ public:
+  using Fn = Value (*)(Exec& ex, const CallArgs& args);
+  FunctionObject(std::string name, Fn fn) : name_(std::move(name)), fn_(fn) {}
+  std::string_view typeName() const override { return "function"; }
+  void repr(std::string& out) const override;
+  bool isCallable() const override { return true; }
+  Value call(Exec& ex, const CallArgs& args) const override { return fn_(ex, args); }
+
+ private:
+  std::string name_;
+  Fn fn_;
+};
+
+}  // namespace smachac::tmpl

@@ -1,0 +1,22 @@
+// Building template values from JSON and YAML documents (render contexts). YAML uses the
+// YAML 1.2 core schema: `yes`/`no` stay strings, quoted scalars are strings, map order is kept.
+#pragma once
+
+#include <string_view>
+
+#include "backends/tmpl/value.h"
+
+namespace YAML {
+class Node;
+}
+
+namespace smachac::tmpl {
+
+/// Parses JSON text; raises TemplateError naming `origin` with line and column.
+Value parseJson(std::string_view text, std::string_view origin);
+/// Parses YAML text (one document); raises TemplateError naming `origin`.
+Value parseYaml(std::string_view text, std::string_view origin);
+/// Converts a yaml-cpp node; raises Fault for duplicate keys or nesting deeper than 200.
+Value valueFromYaml(const YAML::Node& node);
+
+}  // namespace smachac::tmpl

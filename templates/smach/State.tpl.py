@@ -1,0 +1,107 @@
+{% block meta %}
+name: State
+description: >
+  What every SMACH state template extends: one block per code buffer, the
+  state's lambda callbacks, its userdata (initialised in the parent container)
+  and the line that adds it to the parent container. State templates override
+  class_defs (their class, written once) and imports, and body when their
+  constructor differs.
+language: Python
+framework: SMACH
+type: None
+tags: [core]
+includes: []
+extends: []
+variables:
+- - outcomes:
+      description: The outcomes of the state.
+      type: list of str
+- - input_keys:
+      description: The userdata keys the state reads.
+      type: list of str
+- - output_keys:
+      description: The userdata keys the state writes.
+      type: list of str
+- - callbacks:
+      description: >
+        Callbacks by output key: the name of a function, or a backtick-wrapped
+        lambda expression such as `lambda ud: ud.x + 1`.
+      type: dict of str
+- - transitions:
+      description: The sibling state or container outcome for each outcome.
+      type: dict of str
+- - remapping:
+      description: The parent's userdata key for each of the state's keys.
+      type: dict of str
+- - userdata:
+      description: Userdata values set in the parent container, by key.
+      type: dict
+input_keys: []
+output_keys: []
+outcomes: []
+{% endblock meta %}
+{# Templates that extend this one can call these macros without importing them (SMACHA's
+   ROS templates rely on it); they import any other Utils macro they use. #}
+{% from "Utils.tpl.py" import render_userdata, render_outcomes, render_input_keys, render_output_keys, render_def_lambda_callbacks, render_callbacks, render_transitions, render_remapping, render_state_arguments %}
+
+{% block base_header %}
+{% endblock base_header %}
+
+{% block imports %}
+{% endblock imports %}
+
+{% block defs %}
+{% endblock defs %}
+
+{% block class_defs %}
+{% endblock class_defs %}
+
+{% block cb_defs %}
+{%- if callbacks is defined %}
+{{ render_def_lambda_callbacks(defined_headers, class_name, name, uuid, input_keys if input_keys is defined else [], outcomes, callbacks) }}
+{%- endif %}
+{% endblock cb_defs %}
+
+{% block main_def %}
+{% endblock main_def %}
+
+{% block header %}
+{% endblock header %}
+
+{% block header_userdata %}
+{%- if userdata is defined %}
+{{ render_userdata(parent_sm_name, userdata) }}
+{%- endif %}
+{% endblock header_userdata %}
+
+{% block body %}
+{%- if include_comments %}
+# {{ name }} ({{ class_name }})
+{%- endif %}
+smach.{{ parent_type }}.add({{ name | pyrepr }},
+                       {{ class_name }}({{ render_state_arguments(name, uuid, input_keys, output_keys, callbacks, outcomes) }})
+{%- if transitions is defined and parent_type != 'Concurrence' %},
+{{ render_transitions(transitions) }}
+{%- endif %}
+{%- if remapping is defined %},
+{{ render_remapping(remapping) }}
+{%- endif %})
+{% endblock body %}
+
+{% block footer %}
+{% endblock footer %}
+
+{% block introspection_server %}
+{% endblock introspection_server %}
+
+{% block execute %}
+{% endblock execute %}
+
+{% block spin %}
+{% endblock spin %}
+
+{% block base_footer %}
+{% endblock base_footer %}
+
+{% block main %}
+{% endblock main %}

@@ -1,0 +1,5 @@
+{% extends "Base.tpl" %}
+{% block imports %}
+{{ super() }}
+import math
+{% endblock imports %}

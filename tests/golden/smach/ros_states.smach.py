@@ -1,0 +1,380 @@
+#!/usr/bin/env python
+
+import roslib
+import rospy
+import smach
+import smach_ros
+from actionlib import *
+
+import tf2_ros
+
+import threading
+
+
+
+
+
+
+
+
+
+
+
+import geometry_msgs.msg
+
+import roslib.message
+
+
+class TF2ListenerSingleton(object):
+    """The script's one tf2_ros buffer and listener, created on first use."""
+    _buffer = None
+    _listener = None
+
+    @classmethod
+    def get(cls):
+        if cls._buffer is None:
+            cls._buffer = tf2_ros.Buffer()
+            cls._listener = tf2_ros.TransformListener(cls._buffer)
+        return cls._buffer, cls._listener
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+class TF2ListenerState(smach.State):
+    """Stores the transform from the `source` to the `target` frame in `output`."""
+
+    def __init__(self, input_keys=['target', 'source'], output_keys=['output'], callbacks=[],
+                 outcomes=['succeeded', 'aborted'], timeout=1.0):
+        smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
+                             outcomes=['succeeded', 'aborted'])
+        self._buffer, _ = TF2ListenerSingleton.get()
+        self._timeout = rospy.Duration(timeout)
+
+    def execute(self, userdata):
+        try:
+            userdata.output = self._buffer.lookup_transform(
+                userdata.target, userdata.source, rospy.Time(0), self._timeout)
+        except Exception as e:
+            rospy.logerr('No transform from {} to {}: {}'.format(
+                userdata.source, userdata.target, e))
+            return 'aborted'
+        return 'succeeded'
+
+class MsgPublisher(object):
+    """Publishes messages on topics at fixed rates until told to stop."""
+
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._stops = {}
+
+    def start(self, msg, topic, rate, frame_id=''):
+        if frame_id and hasattr(msg, 'header'):
+            msg.header.frame_id = frame_id
+        self.stop(topic)
+        stop = threading.Event()
+        with self._lock:
+            self._stops[topic] = stop
+        publisher = rospy.Publisher(topic, type(msg), queue_size=1, latch=True)
+
+        def run():
+            period = rospy.Rate(rate)
+            while not stop.is_set() and not rospy.is_shutdown():
+                if hasattr(msg, 'header'):
+                    msg.header.stamp = rospy.Time.now()
+                publisher.publish(msg)
+                period.sleep()
+
+        thread = threading.Thread(target=run)
+        thread.daemon = True
+        thread.start()
+        return 'succeeded'
+
+    def stop(self, topic):
+        with self._lock:
+            stop = self._stops.pop(topic, None)
+        if stop is not None:
+            stop.set()
+        return 'succeeded'
+
+    def stop_all(self):
+        with self._lock:
+            topics = list(self._stops)
+        for topic in topics:
+            self.stop(topic)
+        return 'succeeded'
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+class PublishMsgState(smach.State):
+    """Starts or stops publishing a message through the script's MsgPublisher."""
+
+    def __init__(self, name, msg_publisher, action, input_keys=['msg', 'topic', 'rate'],
+                 output_keys=['msg', 'topic'], callbacks=[]):
+        smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
+                             outcomes=['succeeded', 'aborted'])
+        self._name = name
+        self._publisher = msg_publisher
+        self._action = action
+        
+        self._cbs = []
+        for cb_name in sorted(callbacks or []):
+            if cb_name in globals():
+                self._cbs.append(globals()[cb_name])
+
+        self._cb_input_keys = []
+        self._cb_output_keys = []
+        self._cb_outcomes = []
+        for cb in self._cbs:
+            if cb and smach.has_smach_interface(cb):
+                self._cb_input_keys.append(cb.get_registered_input_keys())
+                self._cb_output_keys.append(cb.get_registered_output_keys())
+                self._cb_outcomes.append(cb.get_registered_outcomes())
+                self.register_input_keys(self._cb_input_keys[-1])
+                self.register_output_keys(self._cb_output_keys[-1])
+                self.register_outcomes(self._cb_outcomes[-1])
+
+
+    @staticmethod
+    def _message(msg):
+        if isinstance(msg, (list, tuple)) and len(msg) == 3:
+            point = geometry_msgs.msg.PointStamped()
+            point.point.x, point.point.y, point.point.z = msg
+            return point
+        if isinstance(msg, (list, tuple)) and len(msg) == 2:
+            pose = geometry_msgs.msg.PoseStamped()
+            p, q = pose.pose.position, pose.pose.orientation
+            p.x, p.y, p.z = msg[0]
+            q.x, q.y, q.z, q.w = msg[1]
+            return pose
+        return msg
+
+    def execute(self, userdata):
+        
+        # Call the callbacks
+        for (cb, input_keys, output_keys) in zip(self._cbs,
+                                                 self._cb_input_keys,
+                                                 self._cb_output_keys):
+            cb(smach.Remapper(userdata, input_keys, output_keys, {}))
+
+        topic = userdata.topic if 'topic' in self._input_keys else 'smacha/' + self._name.lower()
+        if self._action == 'stop':
+            return self._publisher.stop(topic)
+        if self._action == 'stop_all':
+            return self._publisher.stop_all()
+        try:
+            msg = self._message(userdata.msg)
+            rate = userdata.rate if 'rate' in self._input_keys else 100.0
+            frame_id = userdata.frame_id if 'frame_id' in self._input_keys else ''
+            outcome = self._publisher.start(msg, topic, rate, frame_id=frame_id)
+        except Exception as e:
+            rospy.logerr('Cannot publish on {}: {}'.format(topic, e))
+            return 'aborted'
+        if 'msg' in self._output_keys:
+            userdata.msg = msg
+        if 'topic' in self._output_keys:
+            userdata.topic = topic
+        return outcome
+
+class WaitForMsgState(smach.State):
+    """Waits for a message on a topic; an optional callback may decide the outcome."""
+
+    def __init__(self, topic, msg_type, msg_cb=None, output_keys=[], latch=False, timeout=None):
+        smach.State.__init__(self, outcomes=['succeeded', 'aborted', 'preempted'],
+                             output_keys=output_keys)
+        self._msg_cb = msg_cb
+        self._latch = latch
+        self._timeout = timeout
+        self._lock = threading.Lock()
+        self._msg = None
+        self._subscriber = rospy.Subscriber(topic, msg_type, self._receive, queue_size=1)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *error):
+        self._subscriber.unregister()
+
+    def _receive(self, msg):
+        with self._lock:
+            self._msg = msg
+
+    def waitForMsg(self):
+        """The next message, None on timeout, or 'preempted'."""
+        deadline = None
+        if self._timeout is not None:
+            deadline = rospy.Time.now() + rospy.Duration.from_sec(self._timeout)
+        while deadline is None or rospy.Time.now() < deadline:
+            with self._lock:
+                msg = self._msg
+                if msg is not None and not self._latch:
+                    self._msg = None
+            if msg is not None:
+                return msg
+            if self.preempt_requested():
+                self.service_preempt()
+                return 'preempted'
+            rospy.sleep(0.1)
+        return None
+
+    def execute(self, userdata):
+        msg = self.waitForMsg()
+        if msg is None:
+            return 'aborted'
+        if isinstance(msg, str) and msg == 'preempted':
+            return 'preempted'
+        if self._msg_cb is not None:
+            decision = self._msg_cb(msg, userdata)
+            if decision is not None:
+                return 'succeeded' if decision else 'aborted'
+        return 'succeeded'
+
+
+
+
+class ReadTopicState(smach.State):
+    """Reads one message from the topic named by the `topic` input key."""
+
+    def __init__(self, input_keys=['topic'], output_keys=['output'], callbacks=[],
+                 outcomes=['succeeded', 'aborted']):
+        smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
+                             outcomes=['succeeded', 'aborted'])
+        
+        self._cbs = []
+        for cb_name in sorted(callbacks or []):
+            if cb_name in globals():
+                self._cbs.append(globals()[cb_name])
+
+        self._cb_input_keys = []
+        self._cb_output_keys = []
+        self._cb_outcomes = []
+        for cb in self._cbs:
+            if cb and smach.has_smach_interface(cb):
+                self._cb_input_keys.append(cb.get_registered_input_keys())
+                self._cb_output_keys.append(cb.get_registered_output_keys())
+                self._cb_outcomes.append(cb.get_registered_outcomes())
+                self.register_input_keys(self._cb_input_keys[-1])
+                self.register_output_keys(self._cb_output_keys[-1])
+                self.register_outcomes(self._cb_outcomes[-1])
+
+
+    def _message_class(self, userdata, topic):
+        if 'msg_type' in self._input_keys:
+            return roslib.message.get_message_class(userdata.msg_type)
+        with WaitForMsgState(topic, rospy.AnyMsg, latch=True) as probe:
+            any_msg = probe.waitForMsg()
+        return roslib.message.get_message_class(any_msg._connection_header['type'])
+
+    def execute(self, userdata):
+        
+        # Call the callbacks
+        for (cb, input_keys, output_keys) in zip(self._cbs,
+                                                 self._cb_input_keys,
+                                                 self._cb_output_keys):
+            cb(smach.Remapper(userdata, input_keys, output_keys, {}))
+
+        try:
+            topic = userdata.topic
+            msg_class = self._message_class(userdata, topic)
+            with WaitForMsgState(topic, msg_class, latch=True) as reader:
+                msg = reader.waitForMsg()
+        except Exception as e:
+            rospy.logerr('Cannot read topic: {}'.format(e))
+            return 'aborted'
+        if msg is None:
+            return 'aborted'
+        for key in ['output', 'msg', 'output_msg', 'msg_output']:
+            if key in self._output_keys:
+                setattr(userdata, key, msg)
+        return 'succeeded'
+
+
+def main():
+    rospy.init_node('ros_states')
+
+    msg_publisher = MsgPublisher()
+    ros_states = smach.StateMachine(outcomes=['done', 'failed'])
+    ros_states.userdata.rate = 100.0
+
+    ros_states.userdata.rate = 100.0
+    ros_states.userdata.topic = ''
+    ros_states.userdata.msg = [1.0, 2.0, 3.0]
+    ros_states.userdata.source = 'tool'
+    ros_states.userdata.target = 'base'
+    ros_states.userdata.topic = '/chatter'
+    ros_states.userdata.width = 0.04
+
+
+    with ros_states:
+        smach.StateMachine.add('SERVICE',
+                               smach_ros.ServiceState('/gripper/set_width', SetWidth,
+                                                           request_slots = ['width'],
+                                                           response_cb = log_response,
+                                             output_keys = ['reply']),
+                               transitions={'aborted':'failed',
+                                            'preempted':'failed',
+                                            'succeeded':'ACTION'})
+
+        smach.StateMachine.add('ACTION',
+                               smach_ros.SimpleActionState('/arm/move', MoveAction,
+                                                           goal = MoveGoal(speed=0.5),
+                                                           result_slots = ['final_pose']),
+                               transitions={'aborted':'failed',
+                                            'preempted':'failed',
+                                            'succeeded':'LOOKUP'})
+
+        smach.StateMachine.add('LOOKUP',
+                               TF2ListenerState(input_keys = ['target', 'source'], output_keys = ['output'], timeout=2.0),
+                               transitions={'aborted':'failed',
+                                            'succeeded':'PUBLISH'})
+
+        smach.StateMachine.add('PUBLISH',
+                               PublishMsgState('PUBLISH', msg_publisher, 'start', input_keys = ['msg', 'topic']),
+                               transitions={'aborted':'failed',
+                                            'succeeded':'READ'})
+
+        smach.StateMachine.add('READ',
+                               ReadTopicState(input_keys = ['topic'], output_keys = ['output']),
+                               transitions={'aborted':'failed',
+                                            'succeeded':'LISTEN'})
+
+        smach.StateMachine.add('LISTEN',
+                               WaitForMsgState('/chatter', std_msgs.msg.String, msg_cb = lambda msg, ud: len(msg.data) > 0, latch = True, timeout = 5),
+                               transitions={'aborted':'failed',
+                                            'preempted':'failed',
+                                            'succeeded':'STOP'})
+
+        smach.StateMachine.add('STOP',
+                               PublishMsgState('STOP', msg_publisher, 'stop_all'),
+                               transitions={'aborted':'failed',
+                                            'succeeded':'done'})
+
+    outcome = ros_states.execute()
+
+
+if __name__ == '__main__':
+    main()

@@ -1,0 +1,46 @@
+#!/usr/bin/env python
+
+import smach
+
+
+class PrintUserdataState(smach.State):
+    """Logs every input key with its value, then succeeds."""
+
+    def __init__(self, input_keys=[], output_keys=[], callbacks=[], outcomes=['succeeded']):
+        smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
+                             outcomes=outcomes)
+
+    def execute(self, userdata):
+        for key in sorted(self.get_registered_input_keys()):
+            smach.loginfo('userdata.{}: {}'.format(key, userdata[key]))
+        return 'succeeded'
+
+
+def main():
+    keys = smach.StateMachine(outcomes=['done'])
+
+    with keys:
+        smach.StateMachine.add('RENAMED',
+                               PrintUserdataState(),
+                               transitions={'succeeded':'BOX'})
+
+        sm_box = smach.StateMachine(outcomes=['box_done'])
+        sm_box.userdata.value = 1
+
+
+
+        with sm_box:
+            smach.StateMachine.add('INNER',
+                                   PrintUserdataState(input_keys = ['value']),
+                                   transitions={'succeeded':'box_done'})
+
+
+
+        smach.StateMachine.add('BOX', sm_box,
+                               transitions={'box_done':'done'})
+
+    outcome = keys.execute()
+
+
+if __name__ == '__main__':
+    main()

@@ -1,0 +1,1 @@
+{% extends "State.tpl.py" %}

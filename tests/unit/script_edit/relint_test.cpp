@@ -1,0 +1,78 @@
+// Every contain golden case (tests/golden/contain) run through the library: the result loads
+// again, and lints without errors — and without warnings when the input had none.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "tests/unit/script_edit/scripts.h"
+
+namespace smachac::script_edit {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct GoldenCase {
+  std::string path;
+  ContainRequest request;
+  std::vector<std::string> script_dirs;
+};
+
+std::vector<std::string> words(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+/// The request of a case's `# ARGS: contain %s NAME TYPE STATE... [options]` line.
+std::optional<GoldenCase> readCase(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> args = words(line);
+  if (args.size() < 6 || args[1] != "ARGS:" || args[2] != "contain") return std::nullopt;
+  GoldenCase c{path.string(), {args[4], ir::StateKind::StateMachine, {}, {}}, {}};
+  if (args[5] == "Concurrence") c.request.kind = ir::StateKind::Concurrence;
+  for (size_t i = 6; i < args.size(); ++i) {
+    if (args[i] == "-o") {
+      ++i;
+    } else if (args[i] == "-S" && i + 1 < args.size()) {
+      c.script_dirs.push_back((path.parent_path() / args[++i]).string());
+    } else if (args[i] == "--default-target" && i + 1 < args.size()) {
+      c.request.default_target = args[++i];
+    } else {
+      c.request.states.push_back(args[i]);
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("contain golden cases load and lint again") {
+  fs::path dir = fs::path(SMACHAC_SOURCE_DIR) / "tests/golden/contain";
+  size_t checked = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".yml" || name.starts_with("fail_")) continue;
+    std::optional<GoldenCase> c = readCase(entry.path());
+    if (!c) continue;
+    CAPTURE(name);
+    std::optional<std::string> out =
+        testing::containFile(c->path, c->request, nullptr, c->script_dirs);
+    if (!out) continue;  // a usage error case
+    testing::LintResult before = testing::lint(c->path, c->script_dirs);
+    testing::TempDir temp;
+    c->script_dirs.insert(c->script_dirs.begin(), dir.string());  // the case's own folder
+    testing::LintResult after = testing::lint(temp.write(name, *out), c->script_dirs);
+    CAPTURE(after.kinds);
+    CHECK(after.errors == 0);
+    if (before.errors == 0 && before.warnings == 0) CHECK(after.warnings == 0);
+    ++checked;
+  }
+  CHECK(checked >= 10);
+}
+
+}  // namespace smachac::script_edit

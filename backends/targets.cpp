@@ -1,6 +1,9 @@
 // The target table.
 #include "backends/targets.h"
 
+#include "backends/cpp/cpp_target.h"
+#include "backends/dot/dot_target.h"
+#include "backends/flexbe/flexbe_target.h"
 #include "backends/smach/smach_target.h"
 #include "ir/json.h"
 #include "ir/printer.h"
@@ -20,6 +23,10 @@ constexpr Target kTargets[] = {
     {"ir", "the IR in its stable text form", &emitIrText},
     {"json", "the IR as JSON (format smachac-ir, version 1)", &emitIrJson},
     {"smach", "SMACH Python, rendered from SMACHA-compatible templates", &smach::emitSmach},
+    {"dot", "the state graph for Graphviz (clusters, outcome-labelled edges)", &dot::emitDot},
+    {"flexbe", "a FlexBE behavior: <name>_sm.py, its states and manifest (-o DIR)",
+     &flexbe::emitFlexbe},
+    {"cpp", "C++20 for the smachac runtime: one translation unit with main()", &cpp::emitCpp},
 };
 
 }  // namespace

@@ -18,6 +18,8 @@ struct EmitOptions {
   std::vector<std::string> template_dirs;  ///< -I, searched before the built-in templates
   bool comments = false;                   ///< -c
   bool introspection = false;              ///< -i
+  int flexbe_ros = 2;                      ///< -flexbe-ros (FlexBE target: ROS 1 or 2)
+  std::string output;                      ///< -o (a target may read what is there)
 };
 
 /// One generated file. An empty `name` is the file named by -o (or stdout); otherwise a

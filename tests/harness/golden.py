@@ -11,12 +11,15 @@ working directory and the file name as given, so paths in diagnostics are stable
     are tested with `# EXIT: 2` (and no `fail_` prefix).
 The case file is appended to the arguments, unless ARGS places it with `%s` or leaves it out
 with `%none`.
+An `%outdir` argument becomes a fresh temporary directory; the files written there are then
+appended to stdout, sorted by name, each after a `#==> <name> <==` line (multi-file targets).
 With SMACHAC_UPDATE_GOLDEN=1 the expected files are rewritten instead (then review them).
 """
 import os
 import shlex
 import subprocess
 import sys
+import tempfile
 
 EXTENSIONS = {"ir": "ir", "json": "json", "dot": "dot", "smach": "smach.py", "cpp": "cpp",
               "flexbe": "flexbe.py", "yaml": "out.yml"}
@@ -79,9 +82,14 @@ def main():
     else:
         args.append(case_file)
     env = dict(os.environ, LC_ALL="C")
-    result = subprocess.run([smachac] + args, cwd=case_dir, capture_output=True, env=env,
-                            timeout=60)
-    stdout = result.stdout.decode("utf-8", "replace")
+    with tempfile.TemporaryDirectory() as outdir:
+        args = [outdir if a == "%outdir" else a for a in args]
+        result = subprocess.run([smachac] + args, cwd=case_dir, capture_output=True, env=env,
+                                timeout=60)
+        stdout = result.stdout.decode("utf-8", "replace")
+        for file in sorted(os.listdir(outdir)):
+            with open(os.path.join(outdir, file), encoding="utf-8", newline="") as f:
+                stdout += f"#==> {file} <==\n" + f.read()
     stderr = result.stderr.decode("utf-8", "replace")
     update = os.environ.get("SMACHAC_UPDATE_GOLDEN") == "1"
     ok = True

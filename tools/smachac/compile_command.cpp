@@ -6,6 +6,7 @@
 #include "backends/targets.h"
 #include "ir/support/version.h"
 #include "tools/smachac/args.h"
+#include "tools/smachac/depfile.h"
 #include "tools/smachac/output.h"
 #include "tools/smachac/session.h"
 
@@ -16,10 +17,12 @@ struct CompileOptions {
   CommonOptions common;
   std::vector<std::string> inputs;
   std::string output;
+  std::string depfile;
   bool syntax_only = false;
   bool comments = false;
   bool introspection = false;
   bool list_targets = false;
+  int flexbe_ros = 2;
 };
 
 std::string targetNames() {
@@ -42,6 +45,11 @@ void setUp(CLI::App& app, CompileOptions& o) {
   app.add_flag("-c,--comments", o.comments, "include the templates' comment blocks");
   app.add_flag("-i,--introspection", o.introspection,
                "include the SMACH introspection server (ROS bases)");
+  app.add_option("--flexbe-ros", o.flexbe_ros, "FlexBE target: ROS version 1 or 2 (default 2)")
+      ->check(CLI::IsMember({1, 2}));
+  app.add_option("--depfile", o.depfile,
+                 "also write a Make-style dependency file of the output (needs -o)")
+      ->type_name("PATH");
   app.add_flag("--list-targets", o.list_targets, "list the output targets and exit");
   addCommonOptions(app, o.common);
 }
@@ -61,13 +69,24 @@ int checkOnly(Session& session, const std::vector<std::string>& inputs) {
 int emit(Session& session, const CompileOptions& o, const backends::Target& target) {
   std::optional<ir::Module> module = session.compile(o.inputs.front());
   std::optional<std::vector<backends::OutputFile>> files;
-  backends::EmitOptions emit_options{o.common.template_dirs, o.comments, o.introspection};
+  backends::EmitOptions emit_options{.template_dirs = o.common.template_dirs,
+                                     .comments = o.comments,
+                                     .introspection = o.introspection,
+                                     .flexbe_ros = o.flexbe_ros,
+                                     .output = o.output};
   if (module) {
     backends::EmitContext context{session.sources(), session.diags(), emit_options};
     files = target.emit(*module, context);
   }
   session.printDiagnostics();
   if (!files || session.diags().hasErrors()) return kExitInputError;
+  if (!o.depfile.empty()) {
+    if (std::optional<std::string> error = writeDepfile(
+            o.depfile, o.output, *module, session.sources(), o.common.template_dirs)) {
+      std::cerr << "smachac: error: " << *error << "\n";
+      return kExitUsageError;
+    }
+  }
   for (const backends::OutputFile& file : *files) {
     std::string path = o.output.empty() ? "-" : o.output;
     if (!file.name.empty()) path = (o.output.empty() ? "." : o.output) + "/" + file.name;
@@ -102,6 +121,7 @@ int runCompile(const Args& raw_args) {
   }
   if (o.syntax_only) return checkOnly(session, o.inputs);
   if (o.inputs.size() > 1) return usageError("one script at a time, unless -fsyntax-only");
+  if (!o.depfile.empty() && o.output.empty()) return usageError("--depfile needs -o");
   const backends::Target* target = backends::findTarget(o.common.target);
   if (!target) {
     return usageError(

@@ -1,0 +1,144 @@
+// C++ literals for the C++ templates.
+#include "backends/cpp/cpp_extensions.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+
+#include "backends/tmpl/value_print.h"
+
+namespace smachac::backends::cpp {
+namespace {
+
+void expectNoArguments(const tmpl::CallArgs& args, const char* what) {
+  if (args.size() != 0) tmpl::fail(std::string("`") + what + "` takes no arguments");
+}
+
+void appendEscaped(std::string& out, unsigned char c) {
+  switch (c) {
+    case '"':
+      out += "\\\"";
+      return;
+    case '\\':
+      out += "\\\\";
+      return;
+    case '\n':
+      out += "\\n";
+      return;
+    case '\t':
+      out += "\\t";
+      return;
+    case '\r':
+      out += "\\r";
+      return;
+    default:
+      break;
+  }
+  if (c < 0x20 || c >= 0x7f) {
+    char octal[5];
+    std::snprintf(octal, sizeof octal, "\\%03o", static_cast<unsigned>(c));
+    out += octal;
+    return;
+  }
+  out += static_cast<char>(c);
+}
+
+std::string intExpression(int64_t i) {
+  if (i == std::numeric_limits<int64_t>::min()) return "int64_t{-9223372036854775807 - 1}";
+  return "int64_t{" + std::to_string(i) + "}";
+}
+
+std::string doubleExpression(double d) {
+  if (std::isnan(d)) return "std::numeric_limits<double>::quiet_NaN()";
+  if (std::isinf(d)) {
+    return d > 0 ? "std::numeric_limits<double>::infinity()"
+                 : "-std::numeric_limits<double>::infinity()";
+  }
+  char text[40];
+  for (int precision = 1; precision <= 17; ++precision) {  // the shortest text that round-trips
+    std::snprintf(text, sizeof text, "%.*g", precision, d);
+    if (std::strtod(text, nullptr) == d) break;
+  }
+  std::string out = text;
+  if (out.find_first_of(".en") == std::string::npos) out += ".0";
+  return "double{" + out + "}";
+}
+
+std::string stringExpression(const std::string& s) {
+  if (s.size() > 2 && s.front() == '`' && s.back() == '`') return s.substr(1, s.size() - 2);
+  if (s.find('\0') != std::string::npos) {
+    return "std::string(" + cppStringLiteral(s) + ", " + std::to_string(s.size()) + ")";
+  }
+  return "std::string(" + cppStringLiteral(s) + ")";
+}
+
+std::string listExpression(const std::vector<tmpl::Value>& items) {
+  std::string out = "rt::List{";
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (i != 0) out += ", ";
+    out += "rt::Value(" + cppValueExpression(items[i]) + ")";
+  }
+  return out + "}";
+}
+
+std::string mapExpression(const tmpl::DictObject& dict) {
+  std::string out = "rt::Map{";
+  bool first = true;
+  for (const auto& [key, value] : dict.entries()) {
+    if (!first) out += ", ";
+    first = false;
+    std::string key_text = key.isString() ? key.s() : tmpl::str(key);
+    out += "{" + cppStringLiteral(key_text) + ", rt::Value(" + cppValueExpression(value) + ")}";
+  }
+  return out + "}";
+}
+
+}  // namespace
+
+std::string cppStringLiteral(std::string_view text) {
+  std::string out = "\"";
+  char previous = 0;
+  for (char c : text) {
+    if (c == '?' && previous == '?') {
+      out += "\\?";  // no trigraph, whatever the compiler's mode
+    } else {
+      appendEscaped(out, static_cast<unsigned char>(c));
+    }
+    previous = c;
+  }
+  return out + "\"";
+}
+
+std::string cppValueExpression(const tmpl::Value& value) {
+  if (value.isNone()) return "nullptr";
+  if (value.isBool()) return value.b() ? "true" : "false";
+  if (value.isInt()) return intExpression(value.i());
+  if (value.isFloat()) return doubleExpression(value.f());
+  if (value.isString()) return stringExpression(value.s());
+  if (value.isListOrTuple()) return listExpression(value.list().items());
+  if (value.isDict()) return mapExpression(value.dict());
+  if (value.isUndefined()) tmpl::fail(value.undefinedMessage());
+  return stringExpression(tmpl::str(value));
+}
+
+void registerCppExtensions(tmpl::Environment& env, const generator::ValueConverter& converter,
+                           bool include_comments) {
+  env.addFilter("cppstr", [](const tmpl::Value& input, const tmpl::CallArgs& args) {
+    expectNoArguments(args, "cppstr");
+    if (input.isUndefined()) tmpl::fail(input.undefinedMessage());
+    return tmpl::Value::string(cppStringLiteral(input.isString() ? input.s() : tmpl::str(input)));
+  });
+  env.addFilter("cppvalue", [](const tmpl::Value& input, const tmpl::CallArgs& args) {
+    expectNoArguments(args, "cppvalue");
+    return tmpl::Value::string(cppValueExpression(input));
+  });
+  env.addTest("forced_string", [&converter](const tmpl::Value& input, const tmpl::CallArgs& args) {
+    expectNoArguments(args, "forced_string");
+    return converter.isForcedString(input);
+  });
+  env.addGlobal("include_comments", tmpl::Value::boolean(include_comments));
+}
+
+}  // namespace smachac::backends::cpp

@@ -1,0 +1,38 @@
+{% block meta %}
+name: RandomOutcomeState
+description: >
+  Runs its callbacks, then ends with one of its outcomes chosen at random (seeded by --seed); writes the choice to output key `outcome`.
+  The state is rt::RandomOutcomeState of the smachac runtime.
+language: C++
+framework: smachac runtime
+type: State
+tags: [core]
+includes: []
+extends:
+- State
+variables:
+- - outcomes:
+      description: The outcomes of the state.
+      type: list of str
+- - input_keys:
+      description: The userdata keys the state reads.
+      type: list of str
+- - output_keys:
+      description: The userdata keys the state writes.
+      type: list of str
+- - callbacks:
+      description: Callbacks by output key (C++ lambdas taking rt::UserData&, or function names).
+      type: dict of str
+input_keys: []
+output_keys: []
+outcomes: []
+{% endblock meta %}
+{% extends "State.tpl.cpp" %}
+
+{% block class_defs %}
+{{ super() }}
+{% if 'class_RandomOutcomeState' not in defined_headers %}
+using rt::RandomOutcomeState;
+{% do defined_headers.append('class_RandomOutcomeState') %}
+{% endif %}
+{% endblock class_defs %}

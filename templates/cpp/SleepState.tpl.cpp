@@ -1,0 +1,36 @@
+{% block meta %}
+name: SleepState
+description: >
+  Sleeps for `time` seconds (waking at once on preemption), then succeeds.
+  The state is rt::SleepState of the smachac runtime.
+language: C++
+framework: smachac runtime
+type: State
+tags: [core]
+includes: []
+extends:
+- State
+variables:
+- time:
+    description: The time to sleep, in seconds.
+    type: float
+input_keys: []
+output_keys: []
+outcomes: []
+{% endblock meta %}
+{% extends "State.tpl.cpp" %}
+
+{% block class_defs %}
+{{ super() }}
+{% if 'class_SleepState' not in defined_headers %}
+using rt::SleepState;
+{% do defined_headers.append('class_SleepState') %}
+{% endif %}
+{% endblock class_defs %}
+
+{% block body %}
+{%- if include_comments %}
+// {{ name }} ({{ class_name }})
+{%- endif %}
+{{ render_add_state(parent_sm_name, parent_type, name, class_name, (time | float | string) + ', ' + render_spec(outcomes, input_keys, output_keys), transitions, remapping) }}
+{% endblock body %}

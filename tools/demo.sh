@@ -5,9 +5,11 @@ set -euo pipefail
 smachac=${1:?usage: tools/demo.sh path/to/smachac}
 cd "$(dirname "$0")/.."
 echo "== smachac lint: every example"
-mapfile -t scripts < <(find examples -name '*.yml' -not -path '*/sub/*' | sort)
-"$smachac" lint "${scripts[@]}"
-echo "   ${#scripts[@]} scripts, no diagnostics"
+"$smachac" lint examples/core/*.yml
+# The Baxter scripts' templates exist for the simulation's C++ states, not yet as template
+# sets: check their structure, data flow and names (-target=ir) without template checks.
+"$smachac" lint -target=ir examples/baxter/*.yml
+echo "   $(ls examples/core/*.yml examples/baxter/*.yml | wc -l) scripts, no diagnostics"
 echo
 echo "== smachac -target=ir examples/core/sub_scripts.yml"
 "$smachac" -target=ir examples/core/sub_scripts.yml

@@ -81,8 +81,8 @@ int emit(Session& session, const CompileOptions& o, const backends::Target& targ
   session.printDiagnostics();
   if (!files || session.diags().hasErrors()) return kExitInputError;
   if (!o.depfile.empty()) {
-    if (std::optional<std::string> error = writeDepfile(
-            o.depfile, o.output, *module, session.sources(), o.common.template_dirs)) {
+    if (std::optional<std::string> error =
+            writeDepfile(o.depfile, o.output, *module, session.sources(), o.common.template_dirs)) {
       std::cerr << "smachac: error: " << *error << "\n";
       return kExitUsageError;
     }

@@ -5,6 +5,7 @@
 
 #include <iostream>
 
+#include "backends/template_check.h"
 #include "frontend/lower.h"
 #include "ir/printer.h"
 #include "passes/pipeline.h"
@@ -63,6 +64,9 @@ std::optional<ir::Module> Session::compile(const std::string& path) {
     std::cerr << "; IR after " << pass << "\n" << ir::printModule(m, sources_);
   };
   if (!passes::runPipeline(*module, context, pipeline)) return std::nullopt;
+  if (!backends::checkTemplates(*module, options_.target, options_.template_dirs, *diags_)) {
+    return std::nullopt;
+  }
   return module;
 }
 

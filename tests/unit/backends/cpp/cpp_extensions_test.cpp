@@ -1,0 +1,50 @@
+// The C++ target's string literals and value expressions.
+#include "backends/cpp/cpp_extensions.h"
+
+#include <doctest/doctest.h>
+
+#include "backends/tmpl/value.h"
+
+namespace smachac::backends::cpp {
+namespace {
+
+using tmpl::Value;
+
+TEST_CASE("cppStringLiteral escapes what C++ would read otherwise") {
+  CHECK(cppStringLiteral("plain") == "\"plain\"");
+  CHECK(cppStringLiteral("say \"hi\"\\") == "\"say \\\"hi\\\"\\\\\"");
+  CHECK(cppStringLiteral("a\nb\tc\rd") == "\"a\\nb\\tc\\rd\"");
+  CHECK(cppStringLiteral(std::string("n\0"
+                                     "1",
+                                     3)) == "\"n\\0001\"");
+  CHECK(cppStringLiteral("\x7f\xc3\xa9") == "\"\\177\\303\\251\"");
+  CHECK(cppStringLiteral("?\?/") == "\"?\\?/\"");
+}
+
+TEST_CASE("every byte gives a literal of plain ASCII") {
+  std::string all;
+  for (int c = 0; c < 256; ++c) all += static_cast<char>(c);
+  std::string literal = cppStringLiteral(all);
+  for (char c : literal) {
+    auto byte = static_cast<unsigned char>(c);
+    CHECK((byte >= 0x20 && byte < 0x7f));
+  }
+}
+
+TEST_CASE("cppValueExpression writes runtime values") {
+  CHECK(cppValueExpression(Value::none()) == "nullptr");
+  CHECK(cppValueExpression(Value::boolean(true)) == "true");
+  CHECK(cppValueExpression(Value::integer(-3)) == "int64_t{-3}");
+  CHECK(cppValueExpression(Value::integer(INT64_MIN)) == "int64_t{-9223372036854775807 - 1}");
+  CHECK(cppValueExpression(Value::real(0.1)) == "double{0.1}");
+  CHECK(cppValueExpression(Value::real(2.0)) == "double{2.0}");
+  CHECK(cppValueExpression(Value::real(1e300)) == "double{1e+300}");
+  CHECK(cppValueExpression(Value::string("x")) == "std::string(\"x\")");
+  CHECK(cppValueExpression(Value::string("`f(1)`")) == "f(1)");
+  CHECK(cppValueExpression(Value::newList({Value::integer(1), Value::string("a")})) ==
+        "rt::List{rt::Value(int64_t{1}), rt::Value(std::string(\"a\"))}");
+  CHECK(cppValueExpression(Value::newList()) == "rt::List{}");
+}
+
+}  // namespace
+}  // namespace smachac::backends::cpp

@@ -27,6 +27,7 @@ test: build
 
 demo: build
 	@bash tools/demo.sh $(SMACHAC)
+	@bash sim/experiments/run_demo.sh $(BUILD)
 
 bench: deps
 	cmake -S . -B $(BUILD)-bench $(CMAKE_FLAGS) -DSMACHAC_BUILD_BENCH=ON -DSMACHAC_BUILD_TESTS=OFF

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# `make demo`: checks every example script, prints the IR of one, and compiles one to SMACH
-# Python (checked with py_compile) under build/demo/.
+# `make demo`, compiler part: checks every example script, prints the IR of one, and compiles
+# one to SMACH Python (checked with py_compile) under build/demo/. The simulation part is
+# sim/experiments/run_demo.sh.
 set -euo pipefail
 smachac=${1:?usage: tools/demo.sh path/to/smachac}
 cd "$(dirname "$0")/.."
 echo "== smachac lint: every example"
 "$smachac" lint examples/core/*.yml
-# The Baxter scripts' templates exist for the simulation's C++ states, not yet as template
-# sets: check their structure, data flow and names (-target=ir) without template checks.
-"$smachac" lint -target=ir examples/baxter/*.yml
+# The Baxter scripts' templates are the simulation's C++ ones (sim/templates/cpp).
+"$smachac" lint -target=cpp -I sim/templates/cpp examples/baxter/*.yml
 echo "   $(ls examples/core/*.yml examples/baxter/*.yml | wc -l) scripts, no diagnostics"
 echo
 echo "== smachac -target=ir examples/core/sub_scripts.yml"

@@ -44,6 +44,8 @@ for exe in "${binaries[@]}"; do
 import json, sys
 data = json.load(open(sys.argv[1]))
 for b in data["benchmarks"]:
+    if "cpu_time" not in b or "time_unit" not in b:
+        continue  # aggregates (BigO, RMS) have no time of their own
     print(f"{b['name']:<32} {b['cpu_time']:10.2f} {b['time_unit']} (cpu)")
 PY
 done

@@ -43,9 +43,10 @@ fuzz: deps
 	cmake --build build-fuzz -j $(JOBS)
 	@bash tools/fuzz.sh build-fuzz $(FUZZ_SECONDS)
 
-# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer.
+# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer (warnings are not errors
+# here: GCC reports false maybe-uninitialized positives in instrumented code).
 test-sanitize: deps
-	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMACHAC_WERROR=ON \
+	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMACHAC_WERROR=OFF \
 	  -DSMACHAC_SANITIZE=address,undefined
 	cmake --build build-asan -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \

@@ -71,6 +71,7 @@ auto finishBaxter(RobotContext& context) -> SceneReport {
 }
 
 auto runBaxter(rt::State& root, RobotContext& context, int argc, char** argv) -> int {
+  root.setThreadObserver(&context);  // simulated time waits for late-starting arms
   const int code = rt::runMain(root, argc, argv);
   if (code == 2) return code;
   const SceneReport report = finishBaxter(context);

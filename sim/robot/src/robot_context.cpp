@@ -1,6 +1,7 @@
 // RobotContext: the shared world, the log and the snapshots.
 #include "smachac/robot/robot_context.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -73,7 +74,12 @@ auto RobotContext::stepUntil(const std::function<bool()>& done, double timeout) 
     std::unique_lock lock(step_mutex_);
     const uint64_t seen = generation_;
     ++waiting_;
-    step_cv_.wait(lock, [&] { return generation_ != seen || waiting_ >= executing_; });
+    const auto everyone = [&] { return waiting_ >= std::max(executing_, threads_); };
+    if (!step_cv_.wait_for(lock, kLateThreadGrace,
+                           [&] { return generation_ != seen || everyone(); })) {
+      // Some thread of the machine is busy outside robot states: go on without it.
+      step_cv_.wait(lock, [&] { return generation_ != seen || waiting_ >= executing_; });
+    }
     if (generation_ != seen) continue;  // another thread stepped for everyone
     world_->step(1);
     ++generation_;
@@ -94,6 +100,24 @@ void RobotContext::endExecution() {
     --executing_;
   }
   step_cv_.notify_all();  // the threads still waiting may now be all there is
+}
+
+void RobotContext::split(std::size_t children) {
+  std::lock_guard lock(step_mutex_);
+  threads_ += static_cast<int>(children) - 1;
+}
+
+void RobotContext::returned() {
+  {
+    std::lock_guard lock(step_mutex_);
+    --threads_;
+  }
+  step_cv_.notify_all();
+}
+
+void RobotContext::joined() {
+  std::lock_guard lock(step_mutex_);
+  ++threads_;
 }
 
 void RobotContext::log(std::string_view path, std::string_view message) {

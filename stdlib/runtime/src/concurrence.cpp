@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "smachac/runtime/errors.h"
+#include "smachac/runtime/thread_observer.h"
 #include "text.h"
 
 namespace smachac::runtime {
@@ -114,18 +115,30 @@ bool Concurrence::begin() {
 }
 
 void Concurrence::runAll() {
-  std::vector<std::jthread> threads;
-  threads.reserve(children().size());
-  try {
-    for (std::size_t i = 1; i < children().size(); ++i) {
-      threads.emplace_back([this, i] { runOne(i); });
+  ThreadObserver* observer = threadObserver();
+  const std::size_t n = children().size();
+  if (observer != nullptr) observer->split(n);
+  {
+    std::vector<std::jthread> threads;
+    threads.reserve(n);
+    try {
+      for (std::size_t i = 1; i < n; ++i) threads.emplace_back([this, i] { runOne(i); });
+    } catch (...) {
+      {
+        std::lock_guard lock(mutex_);
+        preemptRunningLocked();
+      }
+      // The children that never started, the first included, have returned at once.
+      for (std::size_t i = threads.size() + 1; observer != nullptr && i <= n; ++i) {
+        observer->returned();
+      }
+      threads.clear();  // joins the threads already started
+      if (observer != nullptr) observer->joined();
+      throw;
     }
-  } catch (...) {
-    std::lock_guard lock(mutex_);
-    preemptRunningLocked();
-    throw;  // the threads already started are joined by ~jthread
-  }
-  runOne(0);
+    runOne(0);
+  }  // joins the other children
+  if (observer != nullptr) observer->joined();
 }
 
 void Concurrence::runOne(std::size_t index) {
@@ -135,6 +148,7 @@ void Concurrence::runOne(std::size_t index) {
   } catch (...) {
     childDone(index, std::nullopt, std::current_exception());
   }
+  if (ThreadObserver* observer = threadObserver()) observer->returned();
 }
 
 void Concurrence::childDone(std::size_t index, std::optional<std::string> outcome,

@@ -44,7 +44,7 @@ Container::Child& Container::addChild(std::string label, std::unique_ptr<State> 
   Child& child =
       children_.emplace_back(std::move(label), std::move(state), std::move(remapping), userdata_);
   assignPath(*child.state, childPath(child.label));
-  assignTrace(*child.state, traceSink());
+  assignObservers(*child.state, observers());
   invalidate();
   return child;
 }
@@ -58,9 +58,9 @@ void Container::propagatePath(const std::string& path) {
   for (Child& child : children_) assignPath(*child.state, childPath(child.label));
 }
 
-void Container::propagateTrace(TraceSink* sink) {
-  State::propagateTrace(sink);
-  for (Child& child : children_) assignTrace(*child.state, sink);
+void Container::propagateObservers(const Observers& observers) {
+  State::propagateObservers(observers);
+  for (Child& child : children_) assignObservers(*child.state, observers);
 }
 
 void Container::ensureChecked() {

@@ -1,4 +1,4 @@
-// State: declared outcomes and keys, the preempt flag with its wake-up, path and trace wiring.
+// State: declared outcomes and keys, the preempt flag with its wake-up, path and observer wiring.
 #include "smachac/runtime/state.h"
 
 #include "smachac/runtime/errors.h"
@@ -36,7 +36,7 @@ void State::requestPreempt() {
     preempt_.store(true, std::memory_order_release);
   }
   wait_cv_.notify_all();
-  if (trace_ != nullptr) trace_->write({.kind = TraceKind::Preempt, .state = path_});
+  if (TraceSink* sink = traceSink()) sink->write({.kind = TraceKind::Preempt, .state = path_});
 }
 
 void State::servicePreempt() {
@@ -60,7 +60,15 @@ void State::checkConsistency() {
 
 void State::setTraceSink(std::shared_ptr<TraceSink> sink) {
   owned_trace_ = std::move(sink);
-  propagateTrace(owned_trace_.get());
+  Observers observers = observers_;
+  observers.trace = owned_trace_.get();
+  propagateObservers(observers);
+}
+
+void State::setThreadObserver(ThreadObserver* observer) {
+  Observers observers = observers_;
+  observers.threads = observer;
+  propagateObservers(observers);
 }
 
 void State::addOutcome(const std::string& outcome) { addUnique(outcomes_, outcome); }
@@ -68,7 +76,7 @@ void State::addInputKey(const std::string& key) { addUnique(input_keys_, key); }
 void State::addOutputKey(const std::string& key) { addUnique(output_keys_, key); }
 
 bool State::collectProblems(std::vector<std::string>& /*problems*/) { return true; }
-void State::propagateTrace(TraceSink* sink) { trace_ = sink; }
+void State::propagateObservers(const Observers& observers) { observers_ = observers; }
 void State::propagatePath(const std::string& path) { path_ = path; }
 
 }  // namespace smachac::runtime

@@ -3,14 +3,18 @@
 // started with, a log for the states' messages and the optional PNG snapshots.
 //
 // Thread-safe: the two arms of a Concurrence use it at once. Simulated time advances in
-// lockstep with the robot states that are executing: stepUntil() takes the next step only when
-// every executing robot state waits for one, so a state that computes (IK, a transition)
-// takes no simulated time and the arms of a Concurrence advance together, whatever the OS
-// scheduler does. (The world's own mutex is not fair: threads that each step in a loop can
-// starve one another for seconds of simulated time.) The log and the snapshotter have a lock
-// each.
+// lockstep with the machine's threads: stepUntil() takes the next step only when every
+// executing robot state waits for one and, when the context observes the machine's threads
+// (attach it with State::setThreadObserver, as runBaxter does), every thread of the machine
+// does. So a state that computes (IK, a transition) takes no simulated time, and the arms of a
+// Concurrence advance together from the moment it splits, even when the OS starts one child's
+// thread late. A thread that stays busy outside robot states for longer than kLateThreadGrace
+// of wall time (a state that waits for something else) is not waited for. (The world's own
+// mutex is not fair: threads that each step in a loop can starve one another for seconds of
+// simulated time.) The log and the snapshotter have a lock each.
 #pragma once
 
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -21,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "smachac/runtime/thread_observer.h"
 #include "smachac/sim/limb.h"
 #include "smachac/sim/world.h"
 
@@ -48,7 +53,10 @@ struct RobotOptions {
   sim::MoveOptions move{};      ///< defaults of every arm move (speed, tolerance, timeout)
 };
 
-class RobotContext {
+/// How long (wall time) a step waits for a thread of the machine that is not in a robot state.
+inline constexpr std::chrono::milliseconds kLateThreadGrace{100};
+
+class RobotContext : public runtime::ThreadObserver {
  public:
   /// A context over an already loaded world (tests build worlds themselves).
   RobotContext(std::unique_ptr<sim::World> world, RobotOptions options = {});
@@ -73,6 +81,11 @@ class RobotContext {
   void beginExecution();
   void endExecution();
 
+  /// runtime::ThreadObserver: the machine's threads (see stepUntil()).
+  void split(std::size_t children) override;
+  void returned() override;
+  void joined() override;
+
   /// Logs `message` for the state at `path` ("[robot] PICK_BLOCK/OPEN_GRIPPER: ...").
   void log(std::string_view path, std::string_view message);
   /// Every message logged so far, in order.
@@ -90,6 +103,7 @@ class RobotContext {
   std::mutex step_mutex_;
   std::condition_variable step_cv_;
   int executing_ = 0;        ///< robot states executing now
+  int threads_ = 1;          ///< threads of the observed machine running now
   int waiting_ = 0;          ///< threads waiting for the next step
   uint64_t generation_ = 0;  ///< steps taken through stepUntil()
   mutable std::mutex log_mutex_;

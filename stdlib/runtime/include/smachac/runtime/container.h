@@ -68,7 +68,7 @@ class Container : public State {
   virtual std::string kindAndName() const = 0;
 
   bool collectProblems(std::vector<std::string>& problems) final;
-  void propagateTrace(TraceSink* sink) final;
+  void propagateObservers(const Observers& observers) final;
   void propagatePath(const std::string& path) final;
 
  private:

@@ -9,6 +9,7 @@
 #include "smachac/runtime/run.h"
 #include "smachac/runtime/state.h"
 #include "smachac/runtime/state_machine.h"
+#include "smachac/runtime/thread_observer.h"
 #include "smachac/runtime/trace.h"
 #include "smachac/runtime/userdata.h"
 #include "smachac/runtime/value.h"

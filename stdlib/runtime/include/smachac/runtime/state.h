@@ -32,6 +32,13 @@ struct StateSpec {
 };
 
 class TraceSink;
+class ThreadObserver;
+
+/// Who hears about a running machine: set on the root, shared by everything under it.
+struct Observers {
+  TraceSink* trace = nullptr;
+  ThreadObserver* threads = nullptr;
+};
 
 class State {
  public:
@@ -72,7 +79,11 @@ class State {
   /// Sends trace events of this state and everything under it to `sink` (nullptr: none).
   /// Attach before running.
   void setTraceSink(std::shared_ptr<TraceSink> sink);
-  TraceSink* traceSink() const { return trace_; }
+  TraceSink* traceSink() const { return observers_.trace; }
+  /// Tells `observer` (not owned; nullptr: none) how the Concurrences under this state split
+  /// and join threads. Attach before running.
+  void setThreadObserver(ThreadObserver* observer);
+  ThreadObserver* threadObserver() const { return observers_.threads; }
 
  protected:
   /// For states whose keys follow from their arguments (callbacks add output keys).
@@ -82,13 +93,16 @@ class State {
 
   /// Containers: append the problems of this state and its children; true when none.
   virtual bool collectProblems(std::vector<std::string>& problems);
-  virtual void propagateTrace(TraceSink* sink);
+  virtual void propagateObservers(const Observers& observers);
+  const Observers& observers() const { return observers_; }
   virtual void propagatePath(const std::string& path);
 
   static bool collectProblemsOf(State& child, std::vector<std::string>& problems) {
     return child.collectProblems(problems);
   }
-  static void assignTrace(State& child, TraceSink* sink) { child.propagateTrace(sink); }
+  static void assignObservers(State& child, const Observers& observers) {
+    child.propagateObservers(observers);
+  }
   static void assignPath(State& child, const std::string& path) { child.propagatePath(path); }
 
  private:
@@ -99,7 +113,7 @@ class State {
   std::atomic<bool> preempt_{false};
   std::mutex wait_mutex_;
   std::condition_variable wait_cv_;
-  TraceSink* trace_ = nullptr;
+  Observers observers_;
   std::shared_ptr<TraceSink> owned_trace_;
 };
 

@@ -3,6 +3,8 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+
 #include "frontend/scalar.h"
 #include "ir/python_text.h"
 
@@ -98,6 +100,10 @@ class Resolver {
 
   /// A string construct: joins the parts when at least one is a lookup.
   void construct(Value& value) {
+    const ir::List& parts = value.asList();
+    if (std::none_of(parts.begin(), parts.end(), [](const Value& p) { return p.isList(); })) {
+      return;  // only a list part can be a lookup
+    }
     std::string text;
     bool had_lookup = false;
     for (const Value& part : value.asList()) {

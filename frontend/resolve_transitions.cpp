@@ -9,6 +9,7 @@ namespace {
 
 void resolveChildren(ir::Module& module, ir::StateId container) {
   std::unordered_map<std::string_view, ir::StateId> siblings;
+  siblings.reserve(module.state(container).children.size());
   for (ir::StateId child : module.state(container).children) {
     siblings.emplace(module.state(child).name.text, child);
   }

@@ -34,6 +34,8 @@ bool buildRootState(const ir::Value& root, ir::State& state, DiagnosticEmitter& 
       diags.emit(DiagKind::RootParamsIgnored, e.key_loc);
     } else if (e.key == "name") {
       readName(e.value, "the script's `name`", state.name, diags);
+    } else if (e.key == "states") {
+      continue;  // lowered state by state; copying it would copy the whole script
     } else if (isKnown(e.key)) {
       typed.asMap().push_back(e);
     } else {

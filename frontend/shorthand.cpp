@@ -1,6 +1,7 @@
 // Shorthand key expansion.
 #include "frontend/shorthand.h"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 
@@ -38,6 +39,9 @@ std::optional<std::string_view> longhandOf(std::string_view key) {
 void expandShorthand(ir::Value& mapping, DiagnosticEmitter& diags) {
   if (!mapping.isMap()) return;
   ir::Map& entries = mapping.asMap();
+  bool any = std::any_of(entries.begin(), entries.end(),
+                         [](const ir::MapEntry& e) { return longhandOf(e.key).has_value(); });
+  if (!any) return;
   ir::Map result;
   result.reserve(entries.size());
   for (ir::MapEntry& entry : entries) {

@@ -20,6 +20,13 @@ std::string field(std::string_view key, std::string_view what) {
   return fmt::format("`{}` of {}", key, what);
 }
 
+/// readName's usual case, a non-empty string, without formatting the message it might need.
+bool readStringName(const Value& v, ir::Name& out) {
+  if (!v.isString() || v.asString().empty()) return false;
+  out = {v.asString(), v.loc};
+  return true;
+}
+
 void readNameList(const Value& v, std::string_view key, std::string_view what,
                   std::vector<ir::Name>& out, DiagnosticEmitter& diags) {
   if (!v.isList()) {
@@ -29,7 +36,9 @@ void readNameList(const Value& v, std::string_view key, std::string_view what,
   }
   for (const Value& item : v.asList()) {
     ir::Name name;
-    if (readName(item, field(key, what) + " entries", name, diags)) out.push_back(name);
+    if (readStringName(item, name) || readName(item, field(key, what) + " entries", name, diags)) {
+      out.push_back(std::move(name));
+    }
   }
 }
 
@@ -53,7 +62,8 @@ void readTransitions(const Value& v, std::string_view what, ir::State& state,
       v, "transitions", what, "a mapping from outcome to target",
       [&](const ir::MapEntry& e) {
         ir::Name target;
-        if (readName(e.value, field("transitions", what) + " targets", target, diags)) {
+        if (readStringName(e.value, target) ||
+            readName(e.value, field("transitions", what) + " targets", target, diags)) {
           state.transitions.push_back({keyName(e), target, ir::TargetKind::Unresolved, {}});
         }
       },
@@ -66,7 +76,8 @@ void readRemapping(const Value& v, std::string_view what, ir::State& state,
       v, "remapping", what, "a mapping from state key to parent key",
       [&](const ir::MapEntry& e) {
         ir::Name parent;
-        if (readName(e.value, field("remapping", what) + " values", parent, diags)) {
+        if (readStringName(e.value, parent) ||
+            readName(e.value, field("remapping", what) + " values", parent, diags)) {
           state.remapping.push_back({keyName(e), parent});
         }
       },
@@ -112,7 +123,9 @@ bool readCoreKey(const ir::MapEntry& e, std::string_view what, ir::State& state,
   const Value& v = e.value;
   if (key == "template") {
     ir::Name name;
-    if (readName(v, field(key, what), name, diags)) state.template_name = name;
+    if (readStringName(v, name) || readName(v, field(key, what), name, diags)) {
+      state.template_name = name;
+    }
   } else if (key == "outcomes") {
     readNameList(v, key, what, state.outcomes, diags);
   } else if (key == "input_keys") {

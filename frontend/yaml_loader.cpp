@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "frontend/yaml_events.h"
 #include "ir/support/utf8.h"
@@ -38,9 +37,11 @@ std::optional<std::string> readRegularFile(const std::string& path, SourceLoc fr
     diags.emit(DiagKind::FileNotFound, from, path, "permission denied or unreadable");
     return std::nullopt;
   }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return std::move(buffer).str();
+  std::string text;
+  if (!ec) text.reserve(size);
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) text.append(chunk, in.gcount());
+  return text;
 }
 
 }  // namespace

@@ -22,7 +22,10 @@ constexpr std::array<BufferSpec, kBufferCount> kSpecs = {{
 
 template <class Snippets>
 std::string joinSnippets(const Snippets& snippets) {
+  size_t size = 0;
+  for (const std::string& s : snippets) size += s.size() + 1;
   std::string out;
+  out.reserve(size);
   for (const std::string& s : snippets) {
     out += s;
     out += '\n';
@@ -31,7 +34,7 @@ std::string joinSnippets(const Snippets& snippets) {
 }
 
 tmpl::Value stringValue(std::string text, bool strip) {
-  if (strip) text = std::string(stripWhitespace(text));
+  if (strip) stripInPlace(text);
   return tmpl::Value::string(std::move(text));
 }
 
@@ -83,6 +86,13 @@ tmpl::Value CodeBuffers::value(size_t buffer, bool strip) const {
     dict.dict().setString(container, stringValue(std::move(code), strip));
   }
   return dict;
+}
+
+void stripInPlace(std::string& text) {
+  std::string_view kept = stripWhitespace(text);
+  size_t first = kept.empty() ? 0 : static_cast<size_t>(kept.data() - text.data());
+  text.resize(first + kept.size());
+  text.erase(0, first);
 }
 
 std::string_view stripWhitespace(std::string_view text) {

@@ -67,4 +67,7 @@ class CodeBuffers {
 /// Python's str.strip() for the ASCII whitespace templates produce.
 std::string_view stripWhitespace(std::string_view text);
 
+/// The same on `text` itself, without a copy of a large text.
+void stripInPlace(std::string& text);
+
 }  // namespace smachac::generator

@@ -52,7 +52,8 @@ class Generator {
     std::string code;
     guarded(root, [&] { code = runner_.renderBase(*base, baseVariables(root, level)); });
     if (failed_) return std::nullopt;
-    return code + "\n";
+    code += '\n';  // stripping left the capacity for it: no copy of the whole module
+    return code;
   }
 
  private:

@@ -77,7 +77,9 @@ Exports TemplateRunner::withoutLocalVars(Exports all) {
 std::string TemplateRunner::renderBase(const std::string& name, const tmpl::Value& vars) {
   tmpl::RenderOptions options = skip_;
   options.skipBlocks.push_back("meta");
-  return std::string(stripWhitespace(env_.render(name, vars, options)));
+  std::string code = env_.render(name, vars, options);
+  stripInPlace(code);
+  return code;
 }
 
 }  // namespace smachac::generator

@@ -47,7 +47,7 @@ UserdataScope::UserdataScope(const ir::Module& module, ir::StateId container)
 }
 
 uint32_t UserdataScope::intern(std::string_view name) {
-  auto [it, inserted] = index_.emplace(name, static_cast<uint32_t>(names_.size()));
+  auto [it, inserted] = index_.try_emplace(name, static_cast<uint32_t>(names_.size()));
   if (inserted) {
     names_.push_back(name);
     initial_.push_back(0);

@@ -1,0 +1,191 @@
+// YAML events → ir::Value.
+#include "frontend/yaml_value_builder.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <iterator>
+
+#include "frontend/scalar.h"
+
+namespace smachac::frontend {
+namespace {
+
+size_t countNodes(const ir::Value& v) {
+  size_t n = 1;
+  if (v.isList()) {
+    for (const ir::Value& item : v.asList()) n += countNodes(item);
+  } else if (v.isMap()) {
+    for (const ir::MapEntry& e : v.asMap()) n += countNodes(e.value);
+  }
+  return n;
+}
+
+}  // namespace
+
+std::optional<ir::Value> YamlValueBuilder::take() {
+  if (aborted_ || !root_) return std::nullopt;
+  return std::move(root_);
+}
+
+void YamlValueBuilder::onNull(YamlMark mark, uint64_t anchor) {
+  ir::Value v = ir::Value::null(loc(mark));
+  v.loc.length = 1;
+  finish(std::move(v), anchor, /*is_null=*/true);
+}
+
+void YamlValueBuilder::onAlias(YamlMark mark, uint64_t anchor) {
+  auto it = anchors_.find(anchor);
+  if (it == anchors_.end()) {
+    fail(DiagKind::YamlSyntax, loc(mark), "alias of an anchor that is not complete here");
+    return;
+  }
+  if (!charge(it->second.nodes, loc(mark))) return;
+  ir::Value copy = it->second.value;
+  finish(std::move(copy), 0, false, /*counted=*/true);
+}
+
+void YamlValueBuilder::onScalar(YamlMark mark, std::string_view tag, uint64_t anchor,
+                                std::string_view value) {
+  bool quoted = tag == "!";
+  SourceLoc l = loc(mark, value.size() + (quoted ? 2 : 0));
+  if (awaitingKey()) {
+    if (charge(1, l)) acceptKey(stack_[depth_ - 1], value, loc(mark, value.size()));
+    return;
+  }
+  ScalarResult r = resolveScalar(value, quoted ? ScalarStyle::Quoted : ScalarStyle::Plain, tag, l);
+  if (r.int_overflow) report(DiagKind::IntegerOutOfRange, l, value);
+  finish(std::move(r.value), anchor, false);
+}
+
+void YamlValueBuilder::onSequenceStart(YamlMark mark, uint64_t anchor) {
+  open(false, loc(mark), anchor);
+}
+
+void YamlValueBuilder::onMapStart(YamlMark mark, uint64_t anchor) { open(true, loc(mark), anchor); }
+
+void YamlValueBuilder::onCollectionEnd() {
+  if (aborted_ || depth_ == 0) return;
+  Frame& frame = stack_[--depth_];
+  ir::Value v;
+  if (frame.is_map) {
+    v = ir::Value::map(ir::Map(std::make_move_iterator(frame.entries.begin()),
+                               std::make_move_iterator(frame.entries.end())),
+                       frame.loc);
+    frame.entries.clear();
+  } else {
+    v = ir::Value::list(ir::List(std::make_move_iterator(frame.items.begin()),
+                                 std::make_move_iterator(frame.items.end())),
+                        frame.loc);
+    frame.items.clear();
+  }
+  finish(std::move(v), frame.anchor, false);
+}
+
+SourceLoc YamlValueBuilder::loc(YamlMark mark, size_t length) const {
+  if (mark.line < 0) return {file_, 1, 1, 1};
+  return {file_, static_cast<uint32_t>(mark.line + 1), static_cast<uint32_t>(mark.column + 1),
+          static_cast<uint32_t>(std::max<size_t>(length, 1))};
+}
+
+template <typename... Args>
+void YamlValueBuilder::report(DiagKind kind, SourceLoc where, const Args&... args) {
+  if (policy_ == YamlProblems::GiveUp) {
+    gave_up_ = true;
+    aborted_ = true;
+    return;
+  }
+  diags_.emit(kind, where, args...);
+}
+
+void YamlValueBuilder::note(SourceLoc where, std::string message) {
+  if (policy_ == YamlProblems::Report) diags_.note(where, std::move(message));
+}
+
+void YamlValueBuilder::fail(DiagKind kind, SourceLoc where, const std::string& message) {
+  if (!aborted_) report(kind, where, message);
+  aborted_ = true;
+}
+
+bool YamlValueBuilder::awaitingKey() const {
+  return depth_ > 0 && stack_[depth_ - 1].is_map && !stack_[depth_ - 1].has_key;
+}
+
+bool YamlValueBuilder::charge(size_t nodes, SourceLoc where) {
+  nodes_ += nodes;
+  if (nodes_ > kMaxYamlNodes) {
+    fail(DiagKind::YamlTooComplex, where,
+         fmt::format("YAML document expands to more than {} nodes (aliases included)",
+                     kMaxYamlNodes));
+  }
+  return !aborted_;
+}
+
+void YamlValueBuilder::open(bool is_map, SourceLoc where, uint64_t anchor) {
+  if (aborted_) return;
+  if (depth_ >= kMaxYamlDepth) {
+    fail(DiagKind::YamlTooComplex, where,
+         fmt::format("YAML nested more than {} levels deep", kMaxYamlDepth));
+    return;
+  }
+  if (depth_ == stack_.size()) stack_.emplace_back();
+  Frame& frame = stack_[depth_++];
+  frame.is_map = is_map;
+  frame.loc = where;
+  frame.anchor = anchor;
+  frame.has_key = false;
+  frame.key_valid = false;
+}
+
+/// Hands a finished value to its parent (or makes it the root), remembering anchors.
+void YamlValueBuilder::finish(ir::Value v, uint64_t anchor, bool is_null, bool counted) {
+  if (aborted_) return;
+  if (!counted && !charge(1, v.loc)) return;
+  if (anchor != 0) anchors_[anchor] = {v, countNodes(v)};
+  if (depth_ == 0) {
+    root_ = std::move(v);
+    return;
+  }
+  Frame& parent = stack_[depth_ - 1];
+  if (!parent.is_map) {
+    parent.items.push_back(std::move(v));
+  } else if (!parent.has_key) {
+    rejectKey(parent, v);
+  } else {
+    acceptValue(parent, std::move(v), is_null);
+  }
+}
+
+void YamlValueBuilder::acceptKey(Frame& parent, std::string_view text, SourceLoc key_loc) {
+  parent.has_key = true;
+  parent.key_valid = true;
+  parent.key.assign(text);
+  parent.key_loc = key_loc;
+}
+
+/// A key that is a collection (or null): only scalars can name an entry.
+void YamlValueBuilder::rejectKey(Frame& parent, const ir::Value& key) {
+  parent.has_key = true;
+  parent.key_valid = key.isNull();
+  if (key.isNull()) {
+    parent.key.clear();
+    parent.key_loc = key.loc;
+    return;
+  }
+  report(DiagKind::NonScalarKey, key.loc, key.isMap() ? "a mapping" : "a sequence");
+}
+
+void YamlValueBuilder::acceptValue(Frame& parent, ir::Value v, bool is_null) {
+  parent.has_key = false;
+  if (!parent.key_valid) return;
+  if (is_null && v.loc.line != parent.key_loc.line) v.loc = parent.key_loc;
+  for (const ir::MapEntry& e : parent.entries) {
+    if (e.key != parent.key) continue;
+    report(DiagKind::DuplicateKey, parent.key_loc, parent.key);
+    note(e.key_loc, "first defined here");
+    return;
+  }
+  parent.entries.push_back({std::move(parent.key), parent.key_loc, std::move(v)});
+}
+
+}  // namespace smachac::frontend

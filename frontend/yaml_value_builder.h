@@ -1,0 +1,99 @@
+// Builds an ir::Value tree from YAML parse events (yaml-cpp's, or the simple reader's in
+// simple_yaml_reader.h): keeps a location on every value and key, and reports as located
+// diagnostics: non-scalar and duplicate keys, integer overflow, aliases of unfinished anchors,
+// nesting deeper than kMaxYamlDepth and documents that expand (through aliases) to more than
+// kMaxYamlNodes values. Both readers feed the same builder, so they agree on everything but
+// the events themselves.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "ir/support/diagnostic_emitter.h"
+#include "ir/value.h"
+
+namespace smachac::frontend {
+
+inline constexpr size_t kMaxYamlDepth = 1000;  ///< yaml-cpp itself stops at 2000
+inline constexpr size_t kMaxYamlNodes = 4'000'000;
+
+/// A 0-based position as yaml-cpp reports it; line -1 is yaml-cpp's "null mark".
+struct YamlMark {
+  int line = -1;
+  int column = -1;
+};
+
+/// What the builder does about a problem in the document.
+enum class YamlProblems {
+  Report,  ///< emit a diagnostic (and go on where the old path went on)
+  GiveUp,  ///< emit nothing and stop: the caller parses the text again with yaml-cpp
+};
+
+class YamlValueBuilder {
+ public:
+  YamlValueBuilder(uint32_t file, DiagnosticEmitter& diags, YamlProblems policy)
+      : file_(file), diags_(diags), policy_(policy) {}
+
+  /// The document, or nullopt after an error that leaves no usable document.
+  std::optional<ir::Value> take();
+  bool aborted() const { return aborted_; }
+  /// True when a problem was found under YamlProblems::GiveUp.
+  bool gaveUp() const { return gave_up_; }
+
+  /// `tag` is yaml-cpp's: "?" for plain scalars, "!" for quoted ones, else the node's tag.
+  void onScalar(YamlMark mark, std::string_view tag, uint64_t anchor, std::string_view value);
+  void onNull(YamlMark mark, uint64_t anchor);
+  void onAlias(YamlMark mark, uint64_t anchor);
+  void onSequenceStart(YamlMark mark, uint64_t anchor);
+  void onMapStart(YamlMark mark, uint64_t anchor);
+  void onCollectionEnd();
+
+ private:
+  /// A collection being built, and for maps the key waiting for its value. Frames are
+  /// reused (with their buffers' capacity), so each collection gets one exact-size vector.
+  struct Frame {
+    bool is_map = false;
+    SourceLoc loc;
+    uint64_t anchor = 0;
+    bool has_key = false;
+    bool key_valid = false;
+    std::string key;
+    SourceLoc key_loc;
+    ir::List items;
+    ir::Map entries;
+  };
+  struct Anchored {
+    ir::Value value;
+    size_t nodes = 0;
+  };
+
+  SourceLoc loc(YamlMark mark, size_t length = 1) const;
+  template <typename... Args>
+  void report(DiagKind kind, SourceLoc where, const Args&... args);
+  void note(SourceLoc where, std::string message);
+  void fail(DiagKind kind, SourceLoc where, const std::string& message);
+  bool awaitingKey() const;
+  bool charge(size_t nodes, SourceLoc where);
+  void open(bool is_map, SourceLoc where, uint64_t anchor);
+  void finish(ir::Value v, uint64_t anchor, bool is_null, bool counted = false);
+  void acceptKey(Frame& parent, std::string_view text, SourceLoc key_loc);
+  void rejectKey(Frame& parent, const ir::Value& key);
+  void acceptValue(Frame& parent, ir::Value v, bool is_null);
+
+  uint32_t file_;
+  DiagnosticEmitter& diags_;
+  YamlProblems policy_;
+  std::vector<Frame> stack_;  ///< frames past depth_ are spare
+  size_t depth_ = 0;
+  std::unordered_map<uint64_t, Anchored> anchors_;
+  std::optional<ir::Value> root_;
+  size_t nodes_ = 0;
+  bool aborted_ = false;
+  bool gave_up_ = false;
+};
+
+}  // namespace smachac::frontend

@@ -14,12 +14,21 @@
 
 namespace smachac::backends {
 
+/// `-emit=library` (C++ target): the generated pair's file names (the source includes the
+/// header by this name) and the namespace of its declarations.
+struct LibraryNames {
+  std::string source;      ///< e.g. `seq.cpp`
+  std::string header;      ///< e.g. `seq.h`
+  std::string name_space;  ///< e.g. `seq`
+};
+
 struct EmitOptions {
   std::vector<std::string> template_dirs;  ///< -I, searched before the built-in templates
   bool comments = false;                   ///< -c
   bool introspection = false;              ///< -i
   int flexbe_ros = 2;                      ///< -flexbe-ros (FlexBE target: ROS 1 or 2)
   std::string output;                      ///< -o (a target may read what is there)
+  std::optional<LibraryNames> library;     ///< -emit=library; nullopt: -emit=program
 };
 
 /// One generated file. An empty `name` is the file named by -o (or stdout); otherwise a

@@ -28,6 +28,7 @@ for exe in "${binaries[@]}"; do
 done
 
 summary=()
+export SMACHAC_BENCH_BUILD="$build"   # reference scripts that run smachac find it here
 for script in "$here"/*.py; do
   echo "== $(basename "$script")"
   while IFS= read -r line; do

@@ -67,30 +67,34 @@ std::string doubleExpression(double d) {
 }
 
 std::string stringExpression(const std::string& s) {
-  if (s.size() > 2 && s.front() == '`' && s.back() == '`') return s.substr(1, s.size() - 2);
   if (s.find('\0') != std::string::npos) {
     return "std::string(" + cppStringLiteral(s) + ", " + std::to_string(s.size()) + ")";
   }
   return "std::string(" + cppStringLiteral(s) + ")";
 }
 
-std::string listExpression(const std::vector<tmpl::Value>& items) {
+bool isBacktickCode(const std::string& s) {
+  return s.size() > 2 && s.front() == '`' && s.back() == '`';
+}
+
+std::string listExpression(const std::vector<tmpl::Value>& items, const IsForcedString& forced) {
   std::string out = "rt::List{";
   for (size_t i = 0; i < items.size(); ++i) {
     if (i != 0) out += ", ";
-    out += "rt::Value(" + cppValueExpression(items[i]) + ")";
+    out += "rt::Value(" + cppValueExpression(items[i], forced) + ")";
   }
   return out + "}";
 }
 
-std::string mapExpression(const tmpl::DictObject& dict) {
+std::string mapExpression(const tmpl::DictObject& dict, const IsForcedString& forced) {
   std::string out = "rt::Map{";
   bool first = true;
   for (const auto& [key, value] : dict.entries()) {
     if (!first) out += ", ";
     first = false;
     std::string key_text = key.isString() ? key.s() : tmpl::str(key);
-    out += "{" + cppStringLiteral(key_text) + ", rt::Value(" + cppValueExpression(value) + ")}";
+    out += "{" + cppStringLiteral(key_text) + ", rt::Value(" + cppValueExpression(value, forced) +
+           ")}";
   }
   return out + "}";
 }
@@ -112,13 +116,35 @@ std::string cppStringLiteral(std::string_view text) {
 }
 
 std::string cppValueExpression(const tmpl::Value& value) {
+  return cppValueExpression(value, [](const tmpl::Value&) { return false; });
+}
+
+std::string cppCommentText(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    auto byte = static_cast<unsigned char>(c);
+    if (c == '\\') {
+      out += "\\134";  // never a backslash at the end of the line: that would splice lines
+    } else if (byte < 0x20 || byte == 0x7f) {
+      appendEscaped(out, byte);
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string cppValueExpression(const tmpl::Value& value, const IsForcedString& forced) {
   if (value.isNone()) return "nullptr";
   if (value.isBool()) return value.b() ? "true" : "false";
   if (value.isInt()) return intExpression(value.i());
   if (value.isFloat()) return doubleExpression(value.f());
+  if (value.isString() && isBacktickCode(value.s()) && !forced(value)) {
+    return value.s().substr(1, value.s().size() - 2);
+  }
   if (value.isString()) return stringExpression(value.s());
-  if (value.isListOrTuple()) return listExpression(value.list().items());
-  if (value.isDict()) return mapExpression(value.dict());
+  if (value.isListOrTuple()) return listExpression(value.list().items(), forced);
+  if (value.isDict()) return mapExpression(value.dict(), forced);
   if (value.isUndefined()) tmpl::fail(value.undefinedMessage());
   return stringExpression(tmpl::str(value));
 }
@@ -130,9 +156,15 @@ void registerCppExtensions(tmpl::Environment& env, const generator::ValueConvert
     if (input.isUndefined()) tmpl::fail(input.undefinedMessage());
     return tmpl::Value::string(cppStringLiteral(input.isString() ? input.s() : tmpl::str(input)));
   });
-  env.addFilter("cppvalue", [](const tmpl::Value& input, const tmpl::CallArgs& args) {
+  env.addFilter("cppvalue", [&converter](const tmpl::Value& input, const tmpl::CallArgs& args) {
     expectNoArguments(args, "cppvalue");
-    return tmpl::Value::string(cppValueExpression(input));
+    auto forced = [&converter](const tmpl::Value& v) { return converter.isForcedString(v); };
+    return tmpl::Value::string(cppValueExpression(input, forced));
+  });
+  env.addFilter("cppcomment", [](const tmpl::Value& input, const tmpl::CallArgs& args) {
+    expectNoArguments(args, "cppcomment");
+    if (input.isUndefined()) tmpl::fail(input.undefinedMessage());
+    return tmpl::Value::string(cppCommentText(input.isString() ? input.s() : tmpl::str(input)));
   });
   env.addTest("forced_string", [&converter](const tmpl::Value& input, const tmpl::CallArgs& args) {
     expectNoArguments(args, "forced_string");

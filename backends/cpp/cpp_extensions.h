@@ -7,10 +7,14 @@
 //                      nan through std::numeric_limits), strings as `std::string(...)`, lists
 //                      as `rt::List{...}`, dicts as `rt::Map{{"k", v}, ...}`; a backtick
 //                      expression ("`code`") is written bare: it is C++ already
+//                      (a `!str` string is a string even when written in backticks)
+//   filter `cppcomment` text that stays on its `//` comment line: control characters and
+//                      backslashes as octal escapes (no line break, no line splice)
 //   test `forced_string`     the value is a string the script tagged `!str`
 //   global `include_comments` true with -c
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -22,8 +26,17 @@ namespace smachac::backends::cpp {
 /// `"..."`: a C++ string literal holding exactly the bytes of `text`.
 std::string cppStringLiteral(std::string_view text);
 
+/// Whether a string value is one the script tagged `!str`.
+using IsForcedString = std::function<bool(const tmpl::Value&)>;
+
 /// A C++ expression converting to a runtime Value (see `cppvalue` above).
+std::string cppValueExpression(const tmpl::Value& value, const IsForcedString& forced);
+
+/// The same, for values without `!str` strings.
 std::string cppValueExpression(const tmpl::Value& value);
+
+/// The text of a `//` comment for `text` (see `cppcomment` above).
+std::string cppCommentText(std::string_view text);
 
 /// Registers the filters, test and global in `env`; `converter` must outlive `env`'s renders.
 void registerCppExtensions(tmpl::Environment& env, const generator::ValueConverter& converter,

@@ -1,9 +1,10 @@
-// The C++ target: the Python-lambda check, environment, generator, output file.
+// The C++ target: the Python-lambda check, environment, generator, output file(s).
 #include "backends/cpp/cpp_target.h"
 
 #include <memory>
 
 #include "backends/cpp/cpp_extensions.h"
+#include "backends/cpp/cpp_library.h"
 #include "backends/generator/generator.h"
 #include "templates/builtin_templates.h"
 
@@ -81,11 +82,17 @@ std::optional<std::vector<OutputFile>> emitCpp(const ir::Module& module, EmitCon
   generator::ValueConverter converter;
   auto env = std::make_unique<tmpl::Environment>(path.dirs, path.builtin_sets, path.builtins);
   registerCppExtensions(*env, converter, context.options.comments);
+  const std::optional<LibraryNames>& library = context.options.library;
+  env->addGlobal("cpp_library", libraryGlobal(library));
   generator::GeneratorContext generator_context{
       *env, converter, context.sources, context.diags, path, skipBlocks(context.options)};
   std::optional<std::string> code = generator::generate(module, generator_context);
   if (!code) return std::nullopt;
-  return std::vector<OutputFile>{{"", std::move(*code)}};
+  if (!library) return std::vector<OutputFile>{{"", std::move(*code)}};
+  std::optional<std::string> header = renderLibraryHeader(module, *env, converter, path, context);
+  if (!header) return std::nullopt;
+  return std::vector<OutputFile>{{library->header, std::move(*header)},
+                                 {library->source, std::move(*code)}};
 }
 
 }  // namespace smachac::backends::cpp

@@ -2,7 +2,9 @@
 // rendered by SMACHA's generator from the built-in template set `cpp/` after the -I
 // directories, for the runtime in stdlib/runtime (`smachac::runtime`). Backtick expressions
 // are C++ (callbacks are lambdas taking `rt::UserData&`); a Python lambda is a located error.
-// -c keeps the templates' comment blocks.
+// -c keeps the templates' comment blocks. With EmitOptions::library (-emit=library) it emits a
+// header/source pair instead: `<namespace>::build()` returns the machine, no main() (see
+// cpp_library.h).
 #pragma once
 
 #include <optional>

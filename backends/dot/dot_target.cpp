@@ -11,14 +11,18 @@
 namespace smachac::backends::dot {
 namespace {
 
-/// A DOT double-quoted string: quotes and backslashes escaped, line breaks as \n.
+/// A DOT double-quoted string: quotes and backslashes escaped, line breaks as \n (a line break
+/// in the label), other control characters shown as the text `\xNN` (Graphviz rejects some).
 std::string dotString(const std::string& text) {
   std::string out = "\"";
   for (char c : text) {
+    auto byte = static_cast<unsigned char>(c);
     if (c == '"' || c == '\\') out += '\\';
     if (c == '\n') {
       out += "\\n";
-    } else if (c != '\r') {
+    } else if (byte < 0x20 || byte == 0x7f) {
+      out += fmt::format("\\\\x{:02x}", byte);
+    } else {
       out += c;
     }
   }

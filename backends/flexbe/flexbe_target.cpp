@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "backends/flexbe/concurrence_transitions.h"
 #include "backends/flexbe/manual_sections.h"
 #include "backends/generator/generator.h"
 #include "backends/smach/python_extensions.h"
@@ -78,7 +79,8 @@ std::optional<std::vector<OutputFile>> emitFlexbe(const ir::Module& module, Emit
   env.addGlobal("flexbe_ros", tmpl::Value::integer(context.options.flexbe_ros));
   generator::GeneratorContext generator_context{
       env, converter, context.sources, context.diags, path, skipBlocks(context.options)};
-  std::optional<std::string> code = generator::generate(module, generator_context);
+  const ir::Module connected = withConcurrenceTransitions(module);
+  std::optional<std::string> code = generator::generate(connected, generator_context);
   if (!code) return std::nullopt;
   std::vector<OutputFile> files = splitFiles(*code);
   if (!keepManualSections(files, context)) return std::nullopt;

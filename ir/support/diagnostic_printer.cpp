@@ -72,6 +72,23 @@ std::string windowAround(std::string line, size_t& column) {
   return window;
 }
 
+/// A message on one line: the names it quotes may hold line breaks and control characters,
+/// which are shown as escapes (\n, \xNN) so that no name can start a line of its own.
+std::string oneLine(std::string_view message) {
+  std::string out;
+  for (char c : message) {
+    auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      out += fmt::format("\\x{:02x}", byte);
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 void appendSnippet(std::string& out, SourceLoc loc, const SourceManager& sources) {
   if (!loc.hasFile() || !loc.hasLine()) return;
   size_t column = loc.column > 0 ? loc.column - 1 : 0;
@@ -174,12 +191,13 @@ std::optional<DiagnosticFormat> parseDiagnosticFormat(std::string_view name) {
 }
 
 std::string formatDiagnosticText(const Diagnostic& d, const SourceManager& sources) {
-  std::string out = fmt::format("{}: {}: {} [{}]\n", locationPrefix(d.loc, sources),
-                                severityName(d.severity), d.message, diagKindInfo(d.kind).name);
+  std::string out =
+      fmt::format("{}: {}: {} [{}]\n", locationPrefix(d.loc, sources), severityName(d.severity),
+                  oneLine(d.message), diagKindInfo(d.kind).name);
   appendSnippet(out, d.loc, sources);
   for (const DiagNote& n : d.notes) {
     std::string prefix = n.loc.hasFile() ? locationPrefix(n.loc, sources) + ": " : "";
-    out += fmt::format("{}note: {}\n", prefix, n.message);
+    out += fmt::format("{}note: {}\n", prefix, oneLine(n.message));
     appendSnippet(out, n.loc, sources);
   }
   return out;

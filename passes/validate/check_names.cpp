@@ -9,7 +9,11 @@
 //                               `<name lower>`), container names (`sm_<name lower>`), and
 //                               userdata keys (`ud.<key>`; entries of `userdata` are also
 //                               written lower-cased) in `userdata`, `input_keys`, `output_keys`,
-//                               `remapping` (both sides) and `callbacks`
+//                               `remapping` (both sides) and `callbacks`; for C++, a
+//                               callback given as a plain string names a function: it must
+//                               be an identifier, `::`-qualified or not; the base
+//                               template's `function_name` argument (the generated main
+//                               function, lower-cased for Python) too
 //   * template-argument-not-identifier
 //                               for code targets, a template argument key that no template
 //                               can refer to
@@ -44,6 +48,7 @@ class NameChecker {
  private:
   void checkChildren(const ir::State& container) {
     std::unordered_map<std::string_view, const ir::State*> seen;
+    seen.reserve(container.children.size());
     NameSet outcomes = isSequential(container.kind) ? nameSet(container.outcomes) : NameSet();
     for (ir::StateId id : container.children) {
       const ir::State& child = module_.state(id);
@@ -63,9 +68,17 @@ class NameChecker {
   void checkList(const ir::State& state, const std::vector<ir::Name>& names,
                  std::string_view field) {
     if (names.size() < 2) return;
+    constexpr size_t kLinearScanLimit = 16;  // short lists (the usual ones) need no hash set
     NameSet seen;
-    for (const ir::Name& name : names) {
-      if (!seen.insert(name.text).second) {
+    for (size_t i = 0; i < names.size(); ++i) {
+      const ir::Name& name = names[i];
+      bool repeated = false;
+      if (names.size() <= kLinearScanLimit) {
+        for (size_t j = 0; j < i && !repeated; ++j) repeated = names[j].text == name.text;
+      } else {
+        repeated = !seen.insert(name.text).second;
+      }
+      if (repeated) {
         diags_.emit(DiagKind::DuplicateListEntry, name.loc, name.text, field, state.name.text);
       }
     }
@@ -74,6 +87,7 @@ class NameChecker {
   void checkIdentifiers(const ir::State& state) {
     if (state.kind == ir::StateKind::Base) {
       checkVariable("script name", state.name, asciiLower(state.name.text));
+      checkMainFunctionName(state);
     } else if (ir::isContainer(state.kind)) {
       checkVariable("container name", state.name, "sm_" + asciiLower(state.name.text));
     }
@@ -88,7 +102,10 @@ class NameChecker {
       checkKey(remap.key);
       checkKey(remap.parent_key);
     }
-    for (const ir::Argument& callback : state.callbacks) checkKey(callback.key);
+    for (const ir::Argument& callback : state.callbacks) {
+      checkKey(callback.key);
+      if (rules_ == IdentifierRules::Cpp) checkFunctionName(callback.value);
+    }
     for (const ir::Argument& arg : state.args) checkTemplateArgument(state, arg.key);
   }
 
@@ -104,12 +121,48 @@ class NameChecker {
 
   /// A name that becomes the identifier `variable`.
   void checkVariable(std::string_view what, const ir::Name& name, const std::string& variable) {
+    checkVariable(what, name.text, name.loc, variable);
+  }
+
+  /// `text` (written at `loc`) that becomes the identifier `variable`.
+  void checkVariable(std::string_view what, std::string_view text, SourceLoc loc,
+                     const std::string& variable) {
     std::optional<std::string> problem = identifierProblem(variable, rules_);
     if (!problem) return;
-    std::string reason = variable == name.text
+    std::string reason = variable == text
                              ? "it " + *problem
                              : fmt::format("it becomes `{}`, which {}", variable, *problem);
-    diags_.emit(DiagKind::InvalidIdentifier, name.loc, what, name.text, rulesName(rules_), reason);
+    diags_.emit(DiagKind::InvalidIdentifier, loc, what, text, rulesName(rules_), reason);
+  }
+
+  /// The base template's `function_name`: the name of the generated main function.
+  void checkMainFunctionName(const ir::State& base) {
+    for (const ir::Argument& arg : base.args) {
+      if (arg.key.text != "function_name" || arg.value.kind() != ir::ValueKind::String) continue;
+      const std::string& text = arg.value.asString();
+      std::string variable = rules_ == IdentifierRules::Python ? asciiLower(text) : text;
+      checkVariable("function name", text, arg.value.loc, variable);
+    }
+  }
+
+  /// A callback written as a plain string: the C++ program calls the function of that name.
+  void checkFunctionName(const ir::Value& value) {
+    if (value.kind() != ir::ValueKind::String) return;
+    std::string_view text = value.asString();
+    std::string_view rest = text.starts_with("::") ? text.substr(2) : text;
+    while (true) {
+      size_t separator = rest.find("::");
+      std::string_view part = rest.substr(0, separator);
+      if (std::optional<std::string> problem = identifierProblem(part, rules_)) {
+        std::string reason =
+            part == text ? "it " + *problem : fmt::format("its part `{}` {}", part, *problem);
+        diags_.emit(DiagKind::InvalidIdentifier, value.loc, "callback function name", text,
+                    rulesName(rules_), reason);
+        return;
+      }
+      if (separator == std::string_view::npos) return;
+      rest = rest.substr(separator + 2);
+    }
   }
 
   void checkTemplateArgument(const ir::State& state, const ir::Name& key) {

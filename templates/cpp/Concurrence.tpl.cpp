@@ -47,12 +47,12 @@ outcomes: []
 {% set sm_name = 'sm_' + name | lower %}
 
 {% block upper_comments %}
-// BEGIN: {{ name }} (Concurrence)
+// BEGIN: {{ name | cppcomment }} (Concurrence)
 {% endblock upper_comments %}
 
 {% block body %}
 {%- if include_comments %}
-// BEGIN: {{ name }} (Concurrence)
+// BEGIN: {{ name | cppcomment }} (Concurrence)
 {%- endif %}
 {%- set fields = [render_outcomes(outcomes), '.default_outcome = ' + (default_outcome | cppstr if default_outcome is defined else '""')] %}
 {%- if outcome_map is defined %}{% do fields.append(render_outcome_map(outcome_map)) %}{% endif %}
@@ -61,10 +61,10 @@ outcomes: []
 {%- do fields.append('.early_exit = false') %}
 {{ render_container_contents(name, sm_name, 'rt::Concurrence', 'rt::ConcurrenceSpec{' + fields | join(', ') + '}', parent_sm_name, parent_type, header, userdata, header_userdata, body, transitions, remapping) }}
 {%- if include_comments %}
-// END: {{ name }}
+// END: {{ name | cppcomment }}
 {%- endif %}
 {% endblock body %}
 
 {% block lower_comments %}
-// END: {{ name }}
+// END: {{ name | cppcomment }}
 {% endblock lower_comments %}

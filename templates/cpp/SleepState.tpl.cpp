@@ -30,7 +30,7 @@ using rt::SleepState;
 
 {% block body %}
 {%- if include_comments %}
-// {{ name }} ({{ class_name }})
+// {{ name | cppcomment }} ({{ class_name }})
 {%- endif %}
 {{ render_add_state(parent_sm_name, parent_type, name, class_name, (time | float | string) + ', ' + render_spec(outcomes, input_keys, output_keys), transitions, remapping) }}
 {% endblock body %}

@@ -74,7 +74,7 @@ outcomes: []
 
 {% block body %}
 {%- if include_comments %}
-// {{ name }} ({{ class_name }})
+// {{ name | cppcomment }} ({{ class_name }})
 {%- endif %}
 {{ render_add_state(parent_sm_name, parent_type, name, class_name, render_state_arguments(name, uuid, input_keys, output_keys, callbacks, outcomes), transitions, remapping) }}
 {% endblock body %}

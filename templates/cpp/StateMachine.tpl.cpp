@@ -39,22 +39,22 @@ outcomes: []
 {% set sm_name = 'sm_' + name | lower %}
 
 {% block upper_comments %}
-// BEGIN: {{ name }} (StateMachine)
+// BEGIN: {{ name | cppcomment }} (StateMachine)
 {% endblock upper_comments %}
 
 {% block body %}
 {%- if include_comments %}
-// BEGIN: {{ name }} (StateMachine)
+// BEGIN: {{ name | cppcomment }} (StateMachine)
 {%- endif %}
 {%- set fields = [render_outcomes(outcomes)] %}
 {%- if input_keys is defined %}{% do fields.append(render_input_keys(input_keys)) %}{% endif %}
 {%- if output_keys is defined %}{% do fields.append(render_output_keys(output_keys)) %}{% endif %}
 {{ render_container_contents(name, sm_name, 'rt::StateMachine', 'rt::StateMachineSpec{' + fields | join(', ') + '}', parent_sm_name, parent_type, header, userdata, header_userdata, body, transitions, remapping) }}
 {%- if include_comments %}
-// END: {{ name }}
+// END: {{ name | cppcomment }}
 {%- endif %}
 {% endblock body %}
 
 {% block lower_comments %}
-// END: {{ name }}
+// END: {{ name | cppcomment }}
 {% endblock lower_comments %}

@@ -19,13 +19,13 @@ outcomes: []
     each call is one line, strings go through `pyrepr`. -#}
 
 {# One value as Python: None stays None, a `!str` string is quoted, a backtick expression is
-   written bare, non-strings as is, any other string quoted. #}
+   bare, non-strings as Python literals (`pyliteral`: nan is float('nan')), other strings quoted. #}
 {% macro render_value(value) -%}
 {% if value is none %}None
 {%- elif value is forced_string %}{{ value | pyrepr }}
 {%- elif value is string and value is expression %}{{ value | exptostr }}
 {%- elif value is string %}{{ value | pyrepr }}
-{%- else %}{{ value }}
+{%- else %}{{ value | pyliteral }}
 {%- endif %}
 {%- endmacro %}
 
@@ -40,10 +40,10 @@ outcomes={{ render_list(outcomes) }}
 {%- if output_keys is defined and output_keys %}, output_keys={{ render_list(output_keys) }}{% endif %}
 {%- endmacro %}
 
-{# The variable of the container whose children are being rendered: the root is
-   `_state_machine`, a sub-container `_sm_<name>`. #}
+{# The variable of the container whose children are being rendered: the root (a base
+   template: Base, BaxterBase, ...) is `_state_machine`, a sub-container `_sm_<name>`. #}
 {% macro parent_var(parent_template, parent_sm_name) -%}
-{% if parent_template == 'Base' %}_state_machine{% else %}_{{ parent_sm_name }}{% endif %}
+{% if parent_template.endswith('Base') %}_state_machine{% else %}_{{ parent_sm_name }}{% endif %}
 {%- endmacro %}
 
 {% macro render_userdata(var, userdata) -%}

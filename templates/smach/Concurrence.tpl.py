@@ -46,12 +46,12 @@ outcomes: []
 {% set sm_name = 'sm_' + name | lower %}
 
 {% block upper_comments %}
-# BEGIN: {{ name }} (Concurrence)
+# BEGIN: {{ name | pycomment }} (Concurrence)
 {% endblock upper_comments %}
 
 {% block body %}
 {%- if include_comments %}
-# BEGIN: {{ name }} (Concurrence)
+# BEGIN: {{ name | pycomment }} (Concurrence)
 {%- endif %}
 {{ sm_name }} = smach.Concurrence({{ render_outcomes(outcomes) }},
                                    default_outcome={{ default_outcome | pyrepr if default_outcome is defined else "''" }}
@@ -65,10 +65,10 @@ outcomes: []
 {{ render_output_keys(output_keys, indent=35) }}
 {%- endif %}){{ render_container_contents(name, sm_name, parent_type, header, userdata, header_userdata, body, transitions, remapping) }}
 {%- if include_comments %}
-# END: {{ name }}
+# END: {{ name | pycomment }}
 {%- endif %}
 {% endblock body %}
 
 {% block lower_comments %}
-# END: {{ name }}
+# END: {{ name | pycomment }}
 {% endblock lower_comments %}

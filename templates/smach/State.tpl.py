@@ -76,7 +76,7 @@ outcomes: []
 
 {% block body %}
 {%- if include_comments %}
-# {{ name }} ({{ class_name }})
+# {{ name | pycomment }} ({{ class_name }})
 {%- endif %}
 smach.{{ parent_type }}.add({{ name | pyrepr }},
                        {{ class_name }}({{ render_state_arguments(name, uuid, input_keys, output_keys, callbacks, outcomes) }})

@@ -39,12 +39,12 @@ outcomes: []
 {% set sm_name = 'sm_' + name | lower %}
 
 {% block upper_comments %}
-# BEGIN: {{ name }} (StateMachine)
+# BEGIN: {{ name | pycomment }} (StateMachine)
 {% endblock upper_comments %}
 
 {% block body %}
 {%- if include_comments %}
-# BEGIN: {{ name }} (StateMachine)
+# BEGIN: {{ name | pycomment }} (StateMachine)
 {%- endif %}
 {{ sm_name }} = smach.StateMachine({{ render_outcomes(outcomes) }}
 {%- if input_keys is defined %},
@@ -54,10 +54,10 @@ outcomes: []
 {{ render_output_keys(output_keys) }}
 {%- endif %}){{ render_container_contents(name, sm_name, parent_type, header, userdata, header_userdata, body, transitions, remapping) }}
 {%- if include_comments %}
-# END: {{ name }}
+# END: {{ name | pycomment }}
 {%- endif %}
 {% endblock body %}
 
 {% block lower_comments %}
-# END: {{ name }}
+# END: {{ name | pycomment }}
 {% endblock lower_comments %}

@@ -21,12 +21,13 @@ outcomes: []
 
 {# One userdata value as Python: None stays None, a `!str` string is always quoted, a
    backtick expression is written bare, anything SMACHA's not_string accepts is written as
-   is (numbers, lists, dicts, dotted names, calls), any other string is quoted. #}
+   code through `pycode` (numbers, lists, dicts, dotted names, calls; a string that would not
+   compile as written, such as `1.2.3` or `nan`, is quoted), any other string is quoted. #}
 {% macro render_value(value) -%}
 {% if value is none %}None
 {%- elif value is forced_string %}{{ value | pyrepr }}
 {%- elif value is string and value is expression %}{{ value | exptostr }}
-{%- elif value is not_string %}{{ value }}
+{%- elif value is not_string %}{{ value | pycode }}
 {%- else %}{{ value | pyrepr }}
 {%- endif %}
 {%- endmacro %}
@@ -73,9 +74,10 @@ outcomes: []
 {%- endmacro %}
 
 {# The name of the function generated for a backtick (lambda) callback; without a uuid it is
-   the 2017 name, `<key>_<state>_lambda_cb`. #}
+   the 2017 name, `<key>_<state>_lambda_cb`. Bytes of the state name that cannot be part of an
+   identifier are written `_xHH` (`pyident`). #}
 {% macro lambda_callback_name(output_key, state_name, state_uuid) -%}
-{{ output_key | lower }}_{{ state_name | lower }}{% if state_uuid %}_{{ state_uuid }}{% endif %}_lambda_cb
+{{ output_key | lower }}_{{ state_name | lower | pyident }}{% if state_uuid %}_{{ state_uuid }}{% endif %}_lambda_cb
 {%- endmacro %}
 
 {# A module-level function per backtick callback of a state: it evaluates the expression on

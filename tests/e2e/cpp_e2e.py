@@ -3,8 +3,9 @@
 
 Usage: cpp_e2e.py SMACHAC CXX RUNTIME_LIB RUNTIME_INCLUDE WORK_DIR
 
-Every case below is compiled to C++, built with `CXX -std=c++20 -Wall -Wextra -Werror` against
-the runtime's static library (two builds at a time), run with `--seed=1 --trace=json`, and its
+Every case below is compiled to C++, built with `CXX -std=c++20 -Wall -Wextra -Werror` (plus
+$SMACHAC_E2E_CXXFLAGS: the sanitizer flags of a sanitized tree) against the runtime's static
+library (two builds at a time), run with `--seed=1 --trace=json`, and its
 outcome and entered states compared with tests/golden/cpp/<name>.trace. Entered states are
 printed as a tree (two spaces per level), each state's children in the order entered, except
 those of a Concurrence (a container whose children never transition): those are sorted by
@@ -92,8 +93,10 @@ def generate(smachac, area, name, work):
 
 def build(cxx, lib, include, source):
     exe = source[:-4]
-    cmd = [cxx, "-std=c++20", "-Wall", "-Wextra", "-Werror", "-O0", "-I", include, source, lib,
-           "-pthread", "-o", exe]
+    # A sanitized build's runtime needs the same instrumentation in the program (see CMake).
+    sanitize = shlex.split(os.environ.get("SMACHAC_E2E_CXXFLAGS", ""))
+    cmd = [cxx, "-std=c++20", "-Wall", "-Wextra", "-Werror", "-O0", *sanitize, "-I", include,
+           source, lib, "-pthread", "-o", exe]
     result = subprocess.run(cmd, capture_output=True, text=True)
     if result.returncode != 0:
         return None, f"{' '.join(cmd)}\n{result.stderr}"

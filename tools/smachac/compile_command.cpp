@@ -1,12 +1,16 @@
 // `smachac [-target=T] script.yml [-o out]` and `-fsyntax-only`: compile scripts to a target.
 #include <fmt/core.h>
 
+#include <filesystem>
 #include <iostream>
+#include <utility>
+#include <variant>
 
 #include "backends/targets.h"
 #include "ir/support/version.h"
 #include "tools/smachac/args.h"
 #include "tools/smachac/depfile.h"
+#include "tools/smachac/library_output.h"
 #include "tools/smachac/output.h"
 #include "tools/smachac/session.h"
 
@@ -18,6 +22,7 @@ struct CompileOptions {
   std::vector<std::string> inputs;
   std::string output;
   std::string depfile;
+  std::string emit;
   bool syntax_only = false;
   bool comments = false;
   bool introspection = false;
@@ -41,6 +46,10 @@ void setUp(CLI::App& app, CompileOptions& o) {
   app.add_option("inputs", o.inputs, "script files")->type_name("SCRIPT");
   app.add_option("--target", o.common.target, "output target: " + targetNames());
   app.add_option("-o,--output", o.output, "output file (default: standard output)");
+  app.add_option("--emit", o.emit,
+                 "C++ target: `program` (one file with main(), the default) or `library` (a "
+                 "header/source pair: -o DIR/ or -o DIR/NAME.cpp)")
+      ->type_name("KIND");
   app.add_flag("--fsyntax-only", o.syntax_only, "parse and check only; write nothing");
   app.add_flag("-c,--comments", o.comments, "include the templates' comment blocks");
   app.add_flag("-i,--introspection", o.introspection,
@@ -66,36 +75,86 @@ int checkOnly(Session& session, const std::vector<std::string>& inputs) {
   return ok && !session.diags().hasErrors() ? kExitOk : kExitInputError;
 }
 
-int emit(Session& session, const CompileOptions& o, const backends::Target& target) {
+/// The -emit check: the C++ target emits a `program` or a `library`; others take no -emit.
+std::optional<std::string> emitProblem(const std::string& emit, const backends::Target& target) {
+  if (emit.empty()) return std::nullopt;
+  if (target.name != "cpp") {
+    return fmt::format("-emit={} applies to -target=cpp only (the target is `{}`)", emit,
+                       target.name);
+  }
+  if (emit != "program" && emit != "library") {
+    return fmt::format("unknown -emit kind `{}`; available: program, library", emit);
+  }
+  return std::nullopt;
+}
+
+/// `dir/name` ("." when `dir` is empty; no doubled `/`).
+std::string inDirectory(const std::string& dir, const std::string& name) {
+  return (std::filesystem::path(dir.empty() ? "." : dir) / name).string();
+}
+
+/// Where generated files go: the -o directory (multi-file targets, -emit=library), the -o
+/// file, or stdout.
+std::string outputPath(const CompileOptions& o, const std::string& dir,
+                       const backends::OutputFile& file) {
+  if (!file.name.empty()) return inDirectory(dir, file.name);
+  return o.output.empty() ? "-" : o.output;
+}
+
+int writeOutputs(const CompileOptions& o, const std::string& dir,
+                 const std::vector<backends::OutputFile>& files) {
+  std::vector<std::pair<std::string, std::string>> contents;
+  for (const backends::OutputFile& file : files) {
+    std::string path = outputPath(o, dir, file);
+    if (path == "-") {
+      writeFileAtomically(path, file.content);
+    } else {
+      contents.emplace_back(std::move(path), file.content);
+    }
+  }
+  std::optional<std::string> error = writeFilesAtomically(contents);
+  if (!error) return kExitOk;
+  std::cerr << "smachac: error: " << *error << "\n";
+  return kExitUsageError;
+}
+
+int emit(Session& session, const CompileOptions& o, const backends::Target& target,
+         const std::optional<LibraryOutput>& library) {
   std::optional<ir::Module> module = session.compile(o.inputs.front());
   std::optional<std::vector<backends::OutputFile>> files;
   backends::EmitOptions emit_options{.template_dirs = o.common.template_dirs,
                                      .comments = o.comments,
                                      .introspection = o.introspection,
                                      .flexbe_ros = o.flexbe_ros,
-                                     .output = o.output};
+                                     .output = o.output,
+                                     .library = std::nullopt};
+  std::string depfile_target = o.output;
   if (module) {
+    if (library) {
+      emit_options.library = libraryNames(*library, module->state(module->root()).name.text);
+      depfile_target = inDirectory(library->dir, emit_options.library->source);
+    }
     backends::EmitContext context{session.sources(), session.diags(), emit_options};
     files = target.emit(*module, context);
   }
   session.printDiagnostics();
   if (!files || session.diags().hasErrors()) return kExitInputError;
   if (!o.depfile.empty()) {
-    if (std::optional<std::string> error =
-            writeDepfile(o.depfile, o.output, *module, session.sources(), o.common.template_dirs)) {
+    if (std::optional<std::string> error = writeDepfile(
+            o.depfile, depfile_target, *module, session.sources(), o.common.template_dirs)) {
       std::cerr << "smachac: error: " << *error << "\n";
       return kExitUsageError;
     }
   }
-  for (const backends::OutputFile& file : *files) {
-    std::string path = o.output.empty() ? "-" : o.output;
-    if (!file.name.empty()) path = (o.output.empty() ? "." : o.output) + "/" + file.name;
-    if (std::optional<std::string> error = writeFileAtomically(path, file.content)) {
-      std::cerr << "smachac: error: " << *error << "\n";
-      return kExitUsageError;
-    }
-  }
-  return kExitOk;
+  return writeOutputs(o, library ? library->dir : o.output, *files);
+}
+
+/// -emit=library: where the pair goes, or a usage error's exit code.
+std::variant<std::optional<LibraryOutput>, int> libraryOutputOf(const CompileOptions& o) {
+  if (o.emit != "library") return std::optional<LibraryOutput>();
+  std::variant<LibraryOutput, std::string> output = libraryOutput(o.output);
+  if (const std::string* error = std::get_if<std::string>(&output)) return usageError(*error);
+  return std::optional<LibraryOutput>(std::get<LibraryOutput>(output));
 }
 
 }  // namespace
@@ -127,7 +186,12 @@ int runCompile(const Args& raw_args) {
     return usageError(
         fmt::format("unknown target `{}`; available: {}", o.common.target, targetNames()));
   }
-  return emit(session, o, *target);
+  if (std::optional<std::string> problem = emitProblem(o.emit, *target)) {
+    return usageError(*problem);
+  }
+  std::variant<std::optional<LibraryOutput>, int> library = libraryOutputOf(o);
+  if (const int* code = std::get_if<int>(&library)) return *code;
+  return emit(session, o, *target, std::get<std::optional<LibraryOutput>>(library));
 }
 
 int runLint(const Args& raw_args) {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <utility>
 
 namespace smachac::driver {
 namespace {
@@ -28,15 +29,14 @@ std::optional<std::string> writeAll(int fd, const std::string& content) {
   return std::nullopt;
 }
 
-}  // namespace
+/// A destination's content written to a temporary file next to it, not yet renamed.
+struct StagedFile {
+  std::string path;
+  std::string temporary;
+};
 
-std::optional<std::string> writeFileAtomically(const std::string& path,
-                                               const std::string& content) {
-  if (path == "-") {
-    std::fwrite(content.data(), 1, content.size(), stdout);
-    std::fflush(stdout);
-    return std::nullopt;
-  }
+std::optional<std::string> stage(const std::string& path, const std::string& content,
+                                 StagedFile& staged) {
   fs::path target(path);
   fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::string pattern = (dir / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
@@ -47,10 +47,47 @@ std::optional<std::string> writeFileAtomically(const std::string& path,
   ::umask(mask);
   if (::fchmod(fd, 0666 & ~mask) != 0 && !error) error = errnoText();
   if (::close(fd) != 0 && !error) error = errnoText();
-  if (!error && ::rename(pattern.c_str(), path.c_str()) != 0) error = errnoText();
   if (error) {
     ::unlink(pattern.c_str());
     return "cannot write `" + path + "`: " + *error;
+  }
+  staged = {path, pattern};
+  return std::nullopt;
+}
+
+void discard(const std::vector<StagedFile>& staged) {
+  for (const StagedFile& file : staged) ::unlink(file.temporary.c_str());
+}
+
+}  // namespace
+
+std::optional<std::string> writeFileAtomically(const std::string& path,
+                                               const std::string& content) {
+  if (path == "-") {
+    std::fwrite(content.data(), 1, content.size(), stdout);
+    std::fflush(stdout);
+    return std::nullopt;
+  }
+  return writeFilesAtomically({{path, content}});
+}
+
+std::optional<std::string> writeFilesAtomically(
+    const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<StagedFile> staged;
+  for (const auto& [path, content] : files) {
+    StagedFile file;
+    if (std::optional<std::string> error = stage(path, content, file)) {
+      discard(staged);
+      return error;
+    }
+    staged.push_back(std::move(file));
+  }
+  for (size_t i = 0; i < staged.size(); ++i) {
+    if (::rename(staged[i].temporary.c_str(), staged[i].path.c_str()) != 0) {
+      std::string error = "cannot write `" + staged[i].path + "`: " + errnoText();
+      discard({staged.begin() + static_cast<std::ptrdiff_t>(i), staged.end()});
+      return error;
+    }
   }
   return std::nullopt;
 }

@@ -5,10 +5,18 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace smachac::driver {
 
 /// Returns an error message, or nullopt on success. "-" writes to stdout.
 std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& content);
+
+/// Writes several files (path, content) together: every content goes to its temporary file
+/// first, and the files are renamed into place only when all were written. Returns an error
+/// message, or nullopt on success.
+std::optional<std::string> writeFilesAtomically(
+    const std::vector<std::pair<std::string, std::string>>& files);
 
 }  // namespace smachac::driver

@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   rt::StateMachine nested(rt::StateMachineSpec{.outcomes = {"succeeded", "aborted"}});
   nested.userdata().set("greeting", std::string("hello"));
 
-  {
+  [&] {
     [[maybe_unused]] auto& sm_sub = nested.add("SUB",
         std::make_unique<rt::StateMachine>(rt::StateMachineSpec{.outcomes = {"done", "failed"}, .input_keys = {"text"}}),
         rt::Transitions{{"done", "succeeded"}, {"failed", "aborted"}},
@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
         std::make_unique<PrintUserdataState>(rt::StateSpec{.input_keys = {"text", "count"}}),
         rt::Transitions{{"succeeded", "PAR"}});
 
-    {
+    [&] {
       [[maybe_unused]] auto& sm_par = sm_sub.add("PAR",
           std::make_unique<rt::Concurrence>(rt::ConcurrenceSpec{.outcomes = {"all_done", "some_failed"}, .default_outcome = "some_failed", .outcome_map = {{"all_done", {{"LEFT", "succeeded"}, {"RIGHT", "succeeded"}}}}, .early_exit = false}),
           rt::Transitions{{"all_done", "PICK"}, {"some_failed", "failed"}});
@@ -41,12 +41,12 @@ int main(int argc, char** argv) {
 
       sm_par.add("RIGHT",
           std::make_unique<SleepState>(0.02, rt::StateSpec{}));
-    }
+    }();
 
     sm_sub.add("PICK",
         std::make_unique<RandomOutcomeState>(rt::StateSpec{.outcomes = {"done", "again"}}),
         rt::Transitions{{"again", "SHOW"}});
-  }
+  }();
 
   int exit_code = rt::runMain(nested, argc, argv);
   return exit_code;

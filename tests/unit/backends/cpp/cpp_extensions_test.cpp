@@ -21,6 +21,21 @@ TEST_CASE("cppStringLiteral escapes what C++ would read otherwise") {
   CHECK(cppStringLiteral("?\?/") == "\"?\\?/\"");
 }
 
+TEST_CASE("cppCommentText keeps a comment on its line and never splices the next") {
+  CHECK(cppCommentText("A'B\"C */ é") == "A'B\"C */ é");
+  CHECK(cppCommentText("S\nT\r") == "S\\nT\\r");
+  CHECK(cppCommentText("X \\") == "X \\134");
+}
+
+TEST_CASE("a !str string is a string even in backticks") {
+  Value forced = Value::string("`f(1)`");
+  auto isForced = [&forced](const Value& v) { return v.identity() == forced.identity(); };
+  CHECK(cppValueExpression(forced, isForced) == "std::string(\"`f(1)`\")");
+  CHECK(cppValueExpression(Value::newList({forced}), isForced) ==
+        "rt::List{rt::Value(std::string(\"`f(1)`\"))}");
+  CHECK(cppValueExpression(Value::string("`f(1)`"), isForced) == "f(1)");
+}
+
 TEST_CASE("every byte gives a literal of plain ASCII") {
   std::string all;
   for (int c = 0; c < 256; ++c) all += static_cast<char>(c);

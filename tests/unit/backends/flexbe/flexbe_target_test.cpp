@@ -27,6 +27,16 @@ TEST_CASE("sections absent from the existing file keep the generated text") {
         generated.substr(0, 16) + "# [/MANUAL_FUNC]\n");
 }
 
+TEST_CASE("a tag inside a line (a string value) is no tag") {
+  std::string generated =
+      "x = '# [MANUAL_CREATE]'\ngenerated 2\n  # [MANUAL_CREATE]\n\n  # [/MANUAL_CREATE]\n";
+  std::string existing =
+      "x = '# [MANUAL_CREATE]'\ngenerated 1\n  # [MANUAL_CREATE]\nkept\n  # [/MANUAL_CREATE]\n";
+  CHECK(keepManualSections(generated, existing) ==
+        "x = '# [MANUAL_CREATE]'\ngenerated 2\n  # [MANUAL_CREATE]\nkept\n  # [/MANUAL_CREATE]\n");
+  CHECK(keepManualSections(generated, "y = '# [/MANUAL_CREATE]'\n") == generated);
+}
+
 TEST_CASE("an unclosed or reversed tag is an error") {
   std::string generated = "# [MANUAL_INIT]\n\n# [/MANUAL_INIT]\n";
   CHECK_FALSE(keepManualSections(generated, "# [MANUAL_INIT]\nx\n"));

@@ -1,0 +1,165 @@
+// Python literals, SMACHA's bare values, comment text and identifier parts.
+#include "backends/smach/python_code.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "backends/tmpl/py_number.h"
+#include "backends/tmpl/unicode.h"
+#include "backends/tmpl/value_print.h"
+
+namespace smachac::backends::smach {
+namespace {
+
+constexpr std::string_view kPythonKeywords[] = {
+    "False", "None",     "True",  "and",    "as",   "assert", "async",  "await",    "break",
+    "class", "continue", "def",   "del",    "elif", "else",   "except", "finally",  "for",
+    "from",  "global",   "if",    "import", "in",   "is",     "lambda", "nonlocal", "not",
+    "or",    "pass",     "raise", "return", "try",  "while",  "with",   "yield"};
+
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+bool isIdentifierChar(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || isDigit(c) || c == '_';
+}
+
+/// [A-Za-z_][A-Za-z0-9_]*, not a keyword.
+bool isPlainName(std::string_view text) {
+  if (text.empty() || isDigit(text[0])) return false;
+  if (!std::all_of(text.begin(), text.end(), isIdentifierChar)) return false;
+  return std::find(std::begin(kPythonKeywords), std::end(kPythonKeywords), text) ==
+         std::end(kPythonKeywords);
+}
+
+/// Two or more plain names joined by dots (`geometry_msgs.msg.Point`, `data.csv`).
+bool isDottedName(std::string_view text) {
+  size_t parts = 0;
+  size_t start = 0;
+  while (true) {
+    size_t dot = text.find('.', start);
+    if (!isPlainName(text.substr(start, dot == std::string_view::npos ? dot : dot - start))) {
+      return false;
+    }
+    ++parts;
+    if (dot == std::string_view::npos) return parts >= 2;
+    start = dot + 1;
+  }
+}
+
+size_t skipDigits(std::string_view text, size_t at) {
+  while (at < text.size() && isDigit(text[at])) ++at;
+  return at;
+}
+
+/// [+-]?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?: a Python number literal as written.
+bool isNumberLiteral(std::string_view text) {
+  size_t at = !text.empty() && (text[0] == '+' || text[0] == '-') ? 1 : 0;
+  size_t end = skipDigits(text, at);
+  if (end == at || (text[at] == '0' && end - at > 1)) return false;
+  if (end < text.size() && text[end] == '.') {
+    size_t fraction = skipDigits(text, end + 1);
+    if (fraction == end + 1) return false;
+    end = fraction;
+  }
+  if (end < text.size() && (text[end] == 'e' || text[end] == 'E')) {
+    size_t sign = end + 1 < text.size() && (text[end + 1] == '+' || text[end + 1] == '-');
+    size_t exponent = skipDigits(text, end + 1 + sign);
+    if (exponent == end + 1 + sign) return false;
+    end = exponent;
+  }
+  return end == text.size();
+}
+
+/// SMACHA's call shape (`.+\(.*\)$`) on one line without control characters.
+bool isCallShaped(std::string_view text) {
+  bool control = std::any_of(text.begin(), text.end(), [](char c) {
+    return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+  });
+  if (control || text.size() < 3 || text.back() != ')') return false;
+  size_t first_end = 0;
+  tmpl::unicode::decode(text, first_end);
+  size_t open = text.find('(', first_end);
+  return open != std::string_view::npos && open + 1 < text.size();
+}
+
+std::string floatLiteral(double d) {
+  if (std::isnan(d)) return "float('nan')";
+  if (std::isinf(d)) return d > 0 ? "float('inf')" : "-float('inf')";
+  return tmpl::repr(tmpl::Value::real(d));
+}
+
+void appendHex(std::string& out, char prefix, uint32_t cp, int digits) {
+  out += fmt::format("\\{}{:0{}x}", prefix, cp, digits);
+}
+
+}  // namespace
+
+std::string pythonLiteral(const tmpl::Value& value) {
+  if (value.isFloat()) return floatLiteral(value.f());
+  if (value.isListOrTuple()) {
+    std::vector<std::string> items;
+    for (const tmpl::Value& item : value.list().items()) items.push_back(pythonLiteral(item));
+    if (value.isTuple()) {
+      return "(" + fmt::format("{}", fmt::join(items, ", ")) + (items.size() == 1 ? ",)" : ")");
+    }
+    return "[" + fmt::format("{}", fmt::join(items, ", ")) + "]";
+  }
+  if (value.isDict()) {
+    std::vector<std::string> entries;
+    for (const auto& [key, item] : value.dict().entries()) {
+      entries.push_back(pythonLiteral(key) + ": " + pythonLiteral(item));
+    }
+    return "{" + fmt::format("{}", fmt::join(entries, ", ")) + "}";
+  }
+  return tmpl::repr(value);
+}
+
+std::string pythonCode(const tmpl::Value& value) {
+  if (!value.isString()) return pythonLiteral(value);
+  const std::string& text = value.s();
+  if (isNumberLiteral(text) || isDottedName(text)) return text;
+  double ignored;
+  bool number_like = tmpl::parsePythonFloat(text, ignored);
+  if (!number_like && isCallShaped(text)) return text;
+  return tmpl::repr(value);
+}
+
+std::string pythonComment(std::string_view text) {
+  std::string out;
+  for (size_t at = 0; at < text.size();) {
+    char32_t cp = tmpl::unicode::decode(text, at);
+    if (cp == '\t') {
+      out += "\\t";
+    } else if (cp == '\n') {
+      out += "\\n";
+    } else if (cp == '\r') {
+      out += "\\r";
+    } else if (tmpl::unicode::isPrintable(cp)) {
+      tmpl::unicode::encode(out, cp);
+    } else if (cp <= 0xFF) {
+      appendHex(out, 'x', cp, 2);
+    } else if (cp <= 0xFFFF) {
+      appendHex(out, 'u', cp, 4);
+    } else {
+      appendHex(out, 'U', cp, 8);
+    }
+  }
+  return out;
+}
+
+std::string identifierPart(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (isIdentifierChar(c)) {
+      out += c;
+    } else {
+      out += fmt::format("_x{:02x}", static_cast<unsigned char>(c));
+    }
+  }
+  return out;
+}
+
+}  // namespace smachac::backends::smach

@@ -1,0 +1,26 @@
+// Python source text for template values, so that generated Python compiles and holds exactly
+// the script's values:
+//   pythonLiteral   a Python expression equal to a value: repr(), except that non-finite floats
+//                   (whose repr `nan`/`inf` is no Python expression) become float('nan'), ...
+//   pythonCode      SMACHA's bare rendering of values its `not_string` test accepts: strings
+//                   that read as a number literal, a dotted name or a call are code, written
+//                   bare; strings that `not_string` accepts but that would not compile as
+//                   written (`1.2.3`, `nan`, `012`, `a.if`) are quoted instead
+//   pythonComment   text that stays on one `#` comment line: line breaks, control and other
+//                   non-printable characters escaped as repr() escapes them
+//   identifierPart  text usable inside an identifier: bytes other than [A-Za-z0-9_] as `_xHH`
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "backends/tmpl/value.h"
+
+namespace smachac::backends::smach {
+
+std::string pythonLiteral(const tmpl::Value& value);
+std::string pythonCode(const tmpl::Value& value);
+std::string pythonComment(std::string_view text);
+std::string identifierPart(std::string_view text);
+
+}  // namespace smachac::backends::smach

@@ -40,17 +40,25 @@ FUZZ_SECONDS ?= 60
 fuzz: deps
 	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
 	  -DSMACHAC_FUZZ=ON -DSMACHAC_SANITIZE=address,undefined
-	cmake --build build-fuzz -j $(JOBS)
+	cmake --build build-fuzz -j $(JOBS) --target smachac_fuzzers
 	@bash tools/fuzz.sh build-fuzz $(FUZZ_SECONDS)
 
 # The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer (warnings are not errors
-# here: GCC reports false maybe-uninitialized positives in instrumented code).
+# here: GCC reports false maybe-uninitialized positives in instrumented code), then the
+# runtime's concurrency tests under ThreadSanitizer (label tsan; TSan cannot share a tree with
+# ASan, so build-tsan builds only that test). tests/sanitizers/lsan.supp suppresses the leaks
+# of the system's OpenGL (Mesa), and nothing of ours.
+LSAN_SUPPRESSIONS := $(CURDIR)/tests/sanitizers/lsan.supp
 test-sanitize: deps
 	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMACHAC_WERROR=OFF \
 	  -DSMACHAC_SANITIZE=address,undefined
 	cmake --build build-asan -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  LSAN_OPTIONS=suppressions=$(LSAN_SUPPRESSIONS):print_suppressions=0 \
 	  ctest --test-dir build-asan --output-on-failure -j $(JOBS) -LE tsan
+	cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMACHAC_WERROR=OFF
+	cmake --build build-tsan -j $(JOBS) --target smachac_runtime_tsan_test
+	ctest --test-dir build-tsan --output-on-failure -L tsan
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-bench build-fuzz build-asan
+	rm -rf $(BUILD) $(BUILD)-bench build-fuzz build-asan build-tsan

@@ -21,6 +21,17 @@ size_t countNodes(const ir::Value& v) {
   return n;
 }
 
+size_t countTextBytes(const ir::Value& v) {
+  if (v.isString()) return v.asString().size();
+  size_t n = 0;
+  if (v.isList()) {
+    for (const ir::Value& item : v.asList()) n += countTextBytes(item);
+  } else if (v.isMap()) {
+    for (const ir::MapEntry& e : v.asMap()) n += e.key.size() + countTextBytes(e.value);
+  }
+  return n;
+}
+
 }  // namespace
 
 std::optional<ir::Value> YamlValueBuilder::take() {
@@ -41,6 +52,7 @@ void YamlValueBuilder::onAlias(YamlMark mark, uint64_t anchor) {
     return;
   }
   if (!charge(it->second.nodes, loc(mark))) return;
+  if (!chargeAliasText(it->second.bytes, loc(mark))) return;
   ir::Value copy = it->second.value;
   finish(std::move(copy), 0, false, /*counted=*/true);
 }
@@ -121,6 +133,15 @@ bool YamlValueBuilder::charge(size_t nodes, SourceLoc where) {
   return !aborted_;
 }
 
+bool YamlValueBuilder::chargeAliasText(size_t bytes, SourceLoc where) {
+  alias_bytes_ += bytes;
+  if (alias_bytes_ > kMaxYamlAliasBytes) {
+    fail(DiagKind::YamlTooComplex, where,
+         fmt::format("YAML aliases copy more than {} MiB of text", kMaxYamlAliasBytes >> 20));
+  }
+  return !aborted_;
+}
+
 void YamlValueBuilder::open(bool is_map, SourceLoc where, uint64_t anchor) {
   if (aborted_) return;
   if (depth_ >= kMaxYamlDepth) {
@@ -141,7 +162,7 @@ void YamlValueBuilder::open(bool is_map, SourceLoc where, uint64_t anchor) {
 void YamlValueBuilder::finish(ir::Value v, uint64_t anchor, bool is_null, bool counted) {
   if (aborted_) return;
   if (!counted && !charge(1, v.loc)) return;
-  if (anchor != 0) anchors_[anchor] = {v, countNodes(v)};
+  if (anchor != 0) anchors_[anchor] = {v, countNodes(v), countTextBytes(v)};
   if (depth_ == 0) {
     root_ = std::move(v);
     return;

@@ -2,8 +2,8 @@
 // simple_yaml_reader.h): keeps a location on every value and key, and reports as located
 // diagnostics: non-scalar and duplicate keys, integer overflow, aliases of unfinished anchors,
 // nesting deeper than kMaxYamlDepth and documents that expand (through aliases) to more than
-// kMaxYamlNodes values. Both readers feed the same builder, so they agree on everything but
-// the events themselves.
+// kMaxYamlNodes values or whose aliases copy more than kMaxYamlAliasBytes of text. Both
+// readers feed the same builder, so they agree on everything but the events themselves.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +20,8 @@ namespace smachac::frontend {
 
 inline constexpr size_t kMaxYamlDepth = 1000;  ///< yaml-cpp itself stops at 2000
 inline constexpr size_t kMaxYamlNodes = 4'000'000;
+/// Text (scalars and keys) that aliases may copy in all: a script's own size limit.
+inline constexpr size_t kMaxYamlAliasBytes = 32u << 20;
 
 /// A 0-based position as yaml-cpp reports it; line -1 is yaml-cpp's "null mark".
 struct YamlMark {
@@ -69,6 +71,7 @@ class YamlValueBuilder {
   struct Anchored {
     ir::Value value;
     size_t nodes = 0;
+    size_t bytes = 0;  ///< text of its scalars and keys
   };
 
   SourceLoc loc(YamlMark mark, size_t length = 1) const;
@@ -78,6 +81,7 @@ class YamlValueBuilder {
   void fail(DiagKind kind, SourceLoc where, const std::string& message);
   bool awaitingKey() const;
   bool charge(size_t nodes, SourceLoc where);
+  bool chargeAliasText(size_t bytes, SourceLoc where);
   void open(bool is_map, SourceLoc where, uint64_t anchor);
   void finish(ir::Value v, uint64_t anchor, bool is_null, bool counted = false);
   void acceptKey(Frame& parent, std::string_view text, SourceLoc key_loc);
@@ -92,6 +96,7 @@ class YamlValueBuilder {
   std::unordered_map<uint64_t, Anchored> anchors_;
   std::optional<ir::Value> root_;
   size_t nodes_ = 0;
+  size_t alias_bytes_ = 0;
   bool aborted_ = false;
   bool gave_up_ = false;
 };

@@ -205,6 +205,8 @@ void Environment::addTemplate(std::string name, std::string source) {
   impl_->loader().addMemory(std::move(name), std::move(source));
 }
 
+void Environment::setLimits(const Limits& limits) { impl_->setLimits(limits); }
+
 void Environment::addFilter(std::string name, CustomFilter fn) {
   impl_->registry().addFilter(std::move(name), std::move(fn));
 }

@@ -16,6 +16,7 @@
 #include "backends/tmpl/builtins.h"
 #include "backends/tmpl/call_args.h"
 #include "backends/tmpl/error.h"
+#include "backends/tmpl/limits.h"
 #include "backends/tmpl/value.h"
 #include "ir/support/embedded_file.h"
 
@@ -70,6 +71,10 @@ class Environment {
 
   /// Adds an in-memory template, found before any directory (tests, generated templates).
   void addTemplate(std::string name, std::string source);
+
+  /// Replaces the bounds on every later render (steps, string and container sizes); a render
+  /// that exceeds one fails with a located TemplateError. Fuzzers set small ones.
+  void setLimits(const Limits& limits);
 
   void addFilter(std::string name, CustomFilter fn);
   void addTest(std::string name, CustomTest fn);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "backends/tmpl/builtins.h"
+#include "backends/tmpl/limits.h"
 #include "backends/tmpl/loader.h"
 #include "backends/tmpl/runtime.h"
 #include "backends/tmpl/template.h"
@@ -40,8 +41,11 @@ class EnvironmentImpl {
 
   Registry& registry() { return registry_; }
   Loader& loader() { return loader_; }
+  const Limits& limits() const { return limits_; }
+  void setLimits(const Limits& limits) { limits_ = limits; }
 
  private:
+  Limits limits_;
   Registry registry_;
   Loader loader_;
   struct NameHash {

@@ -1,6 +1,7 @@
 // Statement execution: output, control flow, assignments (exported at the top level like
 // Jinja2's context.vars), macros, includes, imports, inheritance and block call sites.
 #include "backends/tmpl/error.h"
+#include "backends/tmpl/limits.h"
 #include "backends/tmpl/render.h"
 #include "backends/tmpl/value_ops.h"
 #include "backends/tmpl/value_print.h"
@@ -9,8 +10,9 @@ namespace smachac::tmpl {
 namespace {
 
 void write(Site& site, std::string_view text) {
-  if (site.out->size() + text.size() > kMaxStringBytes) {
-    fail("output too large (limit " + std::to_string(kMaxStringBytes) + " bytes)");
+  size_t limit = activeLimits().stringBytes;
+  if (site.out->size() + text.size() > limit) {
+    fail("output too large (limit " + std::to_string(limit) + " bytes)");
   }
   site.out->append(text);
 }

@@ -13,7 +13,6 @@ namespace smachac::tmpl {
 namespace {
 
 constexpr int kMaxDepth = 200;
-constexpr uint64_t kMaxSteps = 50'000'000;
 constexpr size_t kStackBudget = size_t{3} << 20;
 
 }  // namespace
@@ -114,7 +113,11 @@ Frame::~Frame() {
 }
 
 Exec::Exec(EnvironmentImpl& environment, const SkipPolicy& skipPolicy, bool keep)
-    : env(environment), registry(registryOf(environment)), skip(skipPolicy), keep_(keep) {
+    : env(environment),
+      registry(registryOf(environment)),
+      skip(skipPolicy),
+      limits_(environment.limits(), steps_),
+      keep_(keep) {
   stackBase_ = reinterpret_cast<uintptr_t>(__builtin_frame_address(0));
 }
 
@@ -175,9 +178,7 @@ void Exec::adopt(Frame* frame) {
 }
 
 void Exec::step() {
-  if (++steps_ > kMaxSteps) {
-    fail("template execution exceeded " + std::to_string(kMaxSteps) + " steps");
-  }
+  checkSteps(++steps_);
 }
 
 void Exec::checkStack() const {

@@ -12,6 +12,7 @@
 #include "backends/tmpl/ast.h"
 #include "backends/tmpl/builtins.h"
 #include "backends/tmpl/call_args.h"
+#include "backends/tmpl/limits.h"
 #include "backends/tmpl/template.h"
 #include "backends/tmpl/value.h"
 
@@ -175,6 +176,7 @@ class Exec {
  public:
  private:
   uint64_t steps_ = 0;
+  ScopedLimits limits_;  // this environment's limits and steps_, active while rendering
   uintptr_t stackBase_;
   bool keep_;
   SmallVector<Ref<Context>, 6> contexts_;

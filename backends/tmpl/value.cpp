@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "backends/tmpl/error.h"
+#include "backends/tmpl/limits.h"
 #include "backends/tmpl/value_ops.h"
 #include "backends/tmpl/value_print.h"
 
@@ -77,6 +78,7 @@ Value Value::real(double d) {
 }
 
 Value Value::string(std::string text, bool markup) {
+  chargeWork(text.size());
   return string(new StringObject(std::move(text)), markup);
 }
 
@@ -90,6 +92,7 @@ Value Value::string(const StringObject* text, bool markup) {
 }
 
 Value Value::newList(std::vector<Value> items) {
+  chargeWork(items.size() * sizeof(Value));
   Value v = object(new ListObject(std::move(items)));
   v.kind_ = Kind::kList;
   return v;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "backends/tmpl/error.h"
+#include "backends/tmpl/limits.h"
 #include "backends/tmpl/py_format.h"
 #include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_print.h"
@@ -533,7 +534,7 @@ int64_t floatToInt(double d) {
 }
 
 void checkSize(size_t n, std::string_view what) {
-  size_t limit = what == "string" ? kMaxStringBytes : kMaxItems;
+  size_t limit = what == "string" ? activeLimits().stringBytes : activeLimits().items;
   if (n > limit) fail(std::string(what) + " too large (limit " + std::to_string(limit) + ")");
 }
 

@@ -53,7 +53,5 @@ class DepthGuard {
   DepthGuard& operator=(const DepthGuard&) = delete;
 };
 
-constexpr size_t kMaxStringBytes = size_t{256} << 20;
-constexpr size_t kMaxItems = size_t{1} << 22;
 
 }  // namespace smachac::tmpl

@@ -208,3 +208,10 @@ TEST_CASE("a concurrence inside a state machine, run many times") {
   CHECK(rt::run(sm).outcome == "done");
   CHECK(sm.userdata().get<int64_t>("n") == 50);
 }
+
+TEST_CASE("a null child is rejected before it is used") {
+  Concurrence par(spec({}));
+  CHECK_THROWS_WITH_AS(par.add("NULL", std::unique_ptr<LambdaState>()),
+                       "concurrence `root`: state `NULL` is null", rt::Error);
+  CHECK(par.size() == 0);
+}

@@ -114,7 +114,16 @@ TEST_CASE("duplicate labels and empty machines are reported") {
   twice.add("A", returns("done"));
   CHECK_THROWS_WITH_AS(twice.checkConsistency(), "state machine `root` has two states labelled `A`",
                        rt::ConsistencyError);
-  CHECK_THROWS_AS(twice.add("NULL", std::unique_ptr<LambdaState>()), rt::Error);
+  CHECK_THROWS_WITH_AS(twice.add("NULL", std::unique_ptr<LambdaState>()),
+                       "state machine `root`: state `NULL` is null", rt::Error);
+  CHECK(twice.size() == 2);
+}
+
+TEST_CASE("a LambdaState without a callable is rejected when it is built") {
+  CHECK_THROWS_WITH_AS(LambdaState(StateSpec{.outcomes = {"done"}}, LambdaState::Body{}),
+                       "a LambdaState needs a callable, got an empty one", rt::Error);
+  CHECK_THROWS_WITH_AS(LambdaState(StateSpec{.outcomes = {"done"}}, LambdaState::BodyWithState{}),
+                       "a LambdaState needs a callable, got an empty one", rt::Error);
 }
 
 TEST_CASE("an undeclared outcome stops the machine with an error") {

@@ -139,6 +139,41 @@ TEST_CASE("recursion and runaway templates are bounded") {
         "t:1:50: list too large (limit 4194304)");
 }
 
+TEST_CASE("an environment's limits replace the defaults, for its renders only") {
+  auto env = smachac::tmpl::testing::makeEnv(
+      {{"loop", "{% for i in range(5) %}{% for j in range(5) %}{% endfor %}{% endfor %}"},
+       {"str", "{{ ('ab' * 8) | length }}|{{ 'ab' * 9 }}"},
+       {"list", "{{ ([1, 2] * 3) | length }}|{{ [1, 2] * 4 }}"},
+       {"out", "{% for i in range(5) %}abcd{% endfor %}"}});
+  smachac::tmpl::Value ctx = smachac::tmpl::Value::newDict();
+  env->setLimits({.steps = 20, .stringBytes = 16, .items = 6});
+  CHECK_THROWS_WITH(env->render("loop", ctx), "loop:1:27: template execution exceeded 20 steps");
+  CHECK_THROWS_WITH(env->render("str", ctx), "str:1:35: string too large (limit 16)");
+  CHECK_THROWS_WITH(env->render("list", ctx), "list:1:39: list too large (limit 6)");
+  CHECK_THROWS_WITH(env->render("out", ctx), "out:1:24: output too large (limit 16 bytes)");
+  CHECK(smachac::tmpl::testing::render("{{ ('ab' * 9) | length }}") == "18");
+  env->setLimits({});
+  CHECK(env->render("str", ctx) == "16|ababababababababab");
+}
+
+TEST_CASE("the strings and lists a render creates count against its steps") {
+  auto env = smachac::tmpl::testing::makeEnv(
+      {{"strings",
+        "{% set s = 'x' * 25600 %}{% for i in range(10) %}{% set t = s ~ i %}"
+        "{% endfor %}"},
+       {"lists", "{% for i in range(20) %}{% set l = [i] * 400 %}{% endfor %}"}});
+  smachac::tmpl::Value ctx = smachac::tmpl::Value::newDict();
+  env->setLimits({.steps = 300});
+  // 100 steps for s, then 100 for each t and the loop's own: past 300 in the 2nd iteration.
+  CHECK_THROWS_WITH(env->render("strings", ctx),
+                    "strings:1:63: template execution exceeded 300 steps");
+  // 25 steps per list (400 values of 16 bytes) and the loop's own: past 300 in the 12th.
+  CHECK_THROWS_WITH(env->render("lists", ctx), "lists:1:40: template execution exceeded 300 steps");
+  env->setLimits({.steps = 2000});
+  CHECK(env->render("strings", ctx) == "");
+  CHECK(env->render("lists", ctx) == "");
+}
+
 TEST_CASE("deeply nested input is rejected cleanly") {
   CHECK(renderError("{{ " + std::string(300, '(') + "1" + std::string(300, ')') + " }}") ==
         "t:1:37: template nested too deeply (limit 100)");

@@ -58,9 +58,9 @@ class Concurrence : public Container {
 
   template <std::derived_from<State> T>
   T& add(std::string label, std::unique_ptr<T> state, Remapping remapping = {}) {
-    T& added = *state;
+    T* added = state.get();  // addState rejects a null state before it is dereferenced
     addState(std::move(label), std::move(state), std::move(remapping));
-    return added;
+    return *added;
   }
 
   std::string execute(UserData& parent) override;

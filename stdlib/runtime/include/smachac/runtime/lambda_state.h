@@ -19,6 +19,7 @@ class LambdaState : public State {
   using Body = std::function<std::string(UserData&)>;
   using BodyWithState = std::function<std::string(State&, UserData&)>;
 
+  /// Both constructors throw Error for an empty callable.
   LambdaState(StateSpec spec, Body body);
   LambdaState(StateSpec spec, BodyWithState body);
 

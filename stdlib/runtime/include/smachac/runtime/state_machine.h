@@ -38,9 +38,9 @@ class StateMachine : public Container {
   template <std::derived_from<State> T>
   T& add(std::string label, std::unique_ptr<T> state, Transitions transitions = {},
          Remapping remapping = {}) {
-    T& added = *state;
+    T* added = state.get();  // addState rejects a null state before it is dereferenced
     addState(std::move(label), std::move(state), std::move(transitions), std::move(remapping));
-    return added;
+    return *added;
   }
 
   std::string execute(UserData& parent) override;

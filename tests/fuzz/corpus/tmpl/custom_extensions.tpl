@@ -1,0 +1,3 @@
+{{ site.name | strict }}{{ x | strict }}{{ 'ab' is short }}{{ x is short }}
+%%context
+x: 3

@@ -1,0 +1,3 @@
+{% extends 'base.tpl' %}{% block meta %}m{% endblock %}{% block b %}{{ super() }}{{ x | default('d') }}{% endblock %}
+%%context
+x: 'y'

@@ -1,0 +1,4 @@
+{% extends 'base.tpl' %}
+ignored text after extends
+{% block title %}Child title{% endblock %}
+{% block body %}Child body, then {{ super() }}{% endblock body %}

@@ -1,0 +1,1 @@
+{% extends 'mid.tpl' %}{% block b %}child>{{ super() }}{% endblock %}

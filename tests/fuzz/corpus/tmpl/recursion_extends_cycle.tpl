@@ -1,0 +1,1 @@
+{% extends 'child.tpl' %}{% block a %}{{ super() }}{% endblock %}

@@ -1,0 +1,2 @@
+{% if true %}{% set a = 'from if' %}{% endif %}{{ a }}
+{% if false %}{% set b = 'never' %}{% endif %}[{{ b }}]

@@ -1,0 +1,4 @@
+line
+    {{ 'kept indent' }}
+    {# comment lstripped #}
+  x {% if true %}not at line start{% endif %}

@@ -1,0 +1,11 @@
+<
+    {%- for x in xs -%}
+    [{{ x }}]
+    {%- endfor -%}
+    >
+{{- ' tight ' -}}
+  |   {{- 'a' }}   {{ 'b' -}}   |
+{#- comment -#}
+  after
+%%context
+xs: [a, b, c]

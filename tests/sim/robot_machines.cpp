@@ -38,9 +38,8 @@ void addLoadBlockModel1(rt::StateMachine& sm, RobotContext& robot) {
          std::make_unique<LoadGazeboModelState>(robot, LoadGazeboModelArgs{.model_name = "block1"}),
          {{"succeeded", "LOAD_BLOCK_MODEL_2"}},
          {{"pose", "block_model_1_pose_base"}, {"reference_frame", "block_model_ref_frame"}});
-  sm.userdata().set("block_model_1_pose_base", pose(0.7, 0.15, -0.13, kNoRotation));
+  setBlockPlacement(sm, 1, 0.7, 0.15);
   sm.userdata().set("block_model_ref_frame", "base");
-  sm.userdata().set("block_model_1_pick_pose", pose(0.7, 0.15, -0.129, kGripperDown));
   sm.userdata().set("block_model_1_place_pose", pose(0.75, 0.0, -0.129, kGripperDown));
 }
 
@@ -51,8 +50,7 @@ void addLoadBlockModel2(rt::StateMachine& sm, RobotContext& robot, double x, dou
          std::make_unique<LoadGazeboModelState>(robot, LoadGazeboModelArgs{.model_name = "block2"}),
          {{"succeeded", next}},
          {{"pose", "block_model_2_pose_base"}, {"reference_frame", "block_model_ref_frame"}});
-  sm.userdata().set("block_model_2_pose_base", pose(x, y, -0.13, kNoRotation));
-  sm.userdata().set("block_model_2_pick_pose", pose(x, y, -0.129, kGripperDown));
+  setBlockPlacement(sm, 2, x, y);
   sm.userdata().set("block_model_2_place_pose", pose(0.75, 0.0, -0.079, kGripperDown));
 }
 
@@ -143,6 +141,12 @@ auto buildPickAndPlace(RobotContext& robot) -> std::unique_ptr<rt::StateMachine>
   addPlaceBlock(*sm, robot, "PLACE_BLOCK", {{"succeeded", "succeeded"}},
                 {{"place_pose", "block_model_place_pose"}});
   return sm;
+}
+
+void setBlockPlacement(rt::StateMachine& sm, int n, double x, double y) {
+  const std::string block = "block_model_" + std::to_string(n);
+  sm.userdata().set(block + "_pose_base", pose(x, y, -0.13, kNoRotation));
+  sm.userdata().set(block + "_pick_pose", pose(x, y, -0.129, kGripperDown));
 }
 
 auto buildStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine> {

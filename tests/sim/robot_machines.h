@@ -24,6 +24,10 @@ auto buildStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine>;
 /// examples/baxter/dual_arm_stacking.yml
 auto buildDualArmStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine>;
 
+/// Puts block <n> of a stacking or dual-arm machine at (x, y) on the table: the userdata its
+/// LOAD_BLOCK_MODEL_<n> state loads it from, and the pick pose that follows it.
+void setBlockPlacement(rt::StateMachine& sm, int n, double x, double y);
+
 /// examples/baxter/sub/pick_block.yml included in `parent` as `label`.
 void addPickBlock(rt::StateMachine& parent, RobotContext& robot, const std::string& label,
                   rt::Transitions transitions, rt::Remapping remapping);

@@ -32,5 +32,5 @@ using rt::SleepState;
 {%- if include_comments %}
 // {{ name | cppcomment }} ({{ class_name }})
 {%- endif %}
-{{ render_add_state(parent_sm_name, parent_type, name, class_name, (time | float | string) + ', ' + render_spec(outcomes, input_keys, output_keys), transitions, remapping) }}
+{{ render_add_state(parent_sm_name, parent_type, name, class_name, (time | float | cppvalue) + ', ' + render_spec(outcomes, input_keys, output_keys), transitions, remapping) }}
 {% endblock body %}

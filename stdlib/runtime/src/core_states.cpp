@@ -8,6 +8,9 @@
 #include <mutex>
 #include <random>
 
+#include "smachac/runtime/errors.h"
+#include "text.h"
+
 namespace smachac::runtime {
 
 namespace {
@@ -151,6 +154,10 @@ SleepState::SleepState(double seconds, StateSpec spec)
     : State(withDefaultOutcome(std::move(spec))), seconds_(seconds) {}
 
 std::string SleepState::execute(UserData& /*userdata*/) {
+  if (!(seconds_ >= 0)) {  // also NaN
+    throw Error("SleepState " + backticked(displayName()) +
+                ": the time to sleep must be 0 seconds or more, not " + std::to_string(seconds_));
+  }
   if (waitForPreempt(std::chrono::duration<double>(seconds_))) {
     servicePreempt();
     return std::string(kPreempted);

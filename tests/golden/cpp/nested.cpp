@@ -37,10 +37,10 @@ int main(int argc, char** argv) {
           rt::Transitions{{"all_done", "PICK"}, {"some_failed", "failed"}});
 
       sm_par.add("LEFT",
-          std::make_unique<SleepState>(0.01, rt::StateSpec{}));
+          std::make_unique<SleepState>(double{0.01}, rt::StateSpec{}));
 
       sm_par.add("RIGHT",
-          std::make_unique<SleepState>(0.02, rt::StateSpec{}));
+          std::make_unique<SleepState>(double{0.02}, rt::StateSpec{}));
     }();
 
     sm_sub.add("PICK",

@@ -1,6 +1,7 @@
 // The core states of SMACHA's templates.
 #include <doctest/doctest.h>
 
+#include <limits>
 #include <sstream>
 
 #include "helpers.h"
@@ -116,4 +117,20 @@ TEST_CASE("SleepState sleeps, or returns `preempted` at once when asked") {
   long_nap.requestPreempt();
   CHECK(rt::run(long_nap).outcome == "preempted");
   CHECK_FALSE(long_nap.preemptRequested());
+}
+
+TEST_CASE("SleepState fails on a negative or NaN time, naming the state") {
+  StateMachine sm({.outcomes = {"done"}});
+  sm.add("NAP", std::make_unique<rt::SleepState>(std::numeric_limits<double>::quiet_NaN()),
+         {{"succeeded", "done"}});
+  const rt::RunResult result = rt::run(sm);
+  CHECK(result.outcome == "aborted");
+  CHECK(
+      result.error.find("SleepState `NAP`: the time to sleep must be 0 seconds or more, not nan") !=
+      std::string::npos);
+  rt::SleepState backwards(-1.0);
+  CHECK(rt::run(backwards).error.find("not -1.000000") != std::string::npos);
+  rt::SleepState forever(std::numeric_limits<double>::infinity());  // until preempted
+  forever.requestPreempt();
+  CHECK(rt::run(forever).outcome == "preempted");
 }

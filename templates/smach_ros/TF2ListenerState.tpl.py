@@ -31,6 +31,7 @@ outcomes:
 - succeeded
 - aborted
 {% endblock meta %}
+{% from "Utils.tpl.py" import render_value %}
 {% extends "State.tpl.py" %}
 {% include "TF2ListenerSingleton.tpl.py" %}
 
@@ -63,7 +64,7 @@ class TF2ListenerState(smach.State):
 {% block body %}
 smach.{{ parent_type }}.add({{ name | pyrepr }},
                        TF2ListenerState({{ render_state_arguments(name, uuid, input_keys, output_keys, callbacks, outcomes) }}
-{%- if timeout is defined %}{% if input_keys is defined or output_keys is defined or callbacks is defined or outcomes is defined %}, {% endif %}timeout={{ timeout }}{% endif %})
+{%- if timeout is defined %}{% if input_keys is defined or output_keys is defined or callbacks is defined or outcomes is defined %}, {% endif %}timeout={{ render_value(timeout) }}{% endif %})
 {%- if transitions is defined and parent_type != 'Concurrence' %},
 {{ render_transitions(transitions) }}
 {%- endif %}

@@ -39,7 +39,7 @@ outcomes:
 - aborted
 - preempted
 {% endblock meta %}
-{% from "Utils.tpl.py" import import_module %}
+{% from "Utils.tpl.py" import import_module, render_value %}
 {% extends "State.tpl.py" %}
 
 {% block imports %}
@@ -111,8 +111,8 @@ class WaitForMsgState(smach.State):
 {% set arguments = [topic | pyrepr, msg_type] %}
 {% if msg_cb is defined %}{% do arguments.append('msg_cb = ' + (msg_cb | exptostr if msg_cb is string and msg_cb is expression else msg_cb | string)) %}{% endif %}
 {% if output_keys is defined %}{% do arguments.append(render_output_keys(output_keys, indent=0)) %}{% endif %}
-{% if latch is defined %}{% do arguments.append('latch = ' + latch | string) %}{% endif %}
-{% if timeout is defined %}{% do arguments.append('timeout = ' + timeout | string) %}{% endif %}
+{% if latch is defined %}{% do arguments.append('latch = ' + render_value(latch) | string) %}{% endif %}
+{% if timeout is defined %}{% do arguments.append('timeout = ' + render_value(timeout) | string) %}{% endif %}
 smach.{{ parent_type }}.add({{ name | pyrepr }},
                        WaitForMsgState({{ arguments | join(', ') }})
 {%- if transitions is defined and parent_type != 'Concurrence' %},

@@ -73,16 +73,38 @@ bool isNumberLiteral(std::string_view text) {
   return end == text.size();
 }
 
-/// SMACHA's call shape (`.+\(.*\)$`) on one line without control characters.
+/// Where the bracket opened at `open` closes, skipping string literals; npos if it does not.
+size_t matchingBracket(std::string_view text, size_t open) {
+  int depth = 0;
+  for (size_t at = open; at < text.size(); ++at) {
+    char c = text[at];
+    if (c == '\'' || c == '"') {
+      for (++at; at < text.size() && text[at] != c; ++at) {
+        if (text[at] == '\\') ++at;
+      }
+      if (at >= text.size()) return std::string_view::npos;
+    } else if (c == '(' || c == '[' || c == '{') {
+      ++depth;
+    } else if (c == ')' || c == ']' || c == '}') {
+      if (--depth == 0) return at;
+    }
+  }
+  return std::string_view::npos;
+}
+
+/// SMACHA's call shape (`.+\(.*\)$`), narrowed to one call: a name or dotted name, then
+/// arguments whose brackets close at the end of the text (so `f(); g()` is no call), on one
+/// line without control characters.
 bool isCallShaped(std::string_view text) {
   bool control = std::any_of(text.begin(), text.end(), [](char c) {
     return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
   });
   if (control || text.size() < 3 || text.back() != ')') return false;
-  size_t first_end = 0;
-  tmpl::unicode::decode(text, first_end);
-  size_t open = text.find('(', first_end);
-  return open != std::string_view::npos && open + 1 < text.size();
+  size_t open = text.find('(');
+  if (open == std::string_view::npos) return false;
+  std::string_view callee = text.substr(0, open);
+  if (!isPlainName(callee) && !isDottedName(callee)) return false;
+  return matchingBracket(text, open) == text.size() - 1;
 }
 
 std::string floatLiteral(double d) {

@@ -3,7 +3,8 @@
 //   pythonLiteral   a Python expression equal to a value: repr(), except that non-finite floats
 //                   (whose repr `nan`/`inf` is no Python expression) become float('nan'), ...
 //   pythonCode      SMACHA's bare rendering of values its `not_string` test accepts: strings
-//                   that read as a number literal, a dotted name or a call are code, written
+//                   that read as a number literal, a dotted name or one call (a name or
+//                   dotted name, then arguments closing at the end) are code, written
 //                   bare; strings that `not_string` accepts but that would not compile as
 //                   written (`1.2.3`, `nan`, `012`, `a.if`) are quoted instead
 //   pythonComment   text that stays on one `#` comment line: line breaks, control and other

@@ -44,6 +44,7 @@ SKIPPED = {
     "ros_base": "ROS templates (ROSBase)",
     "ros_introspection": "ROS templates (ROSBase)",
     "ros_states": "ROS templates",
+    "ros_code_like_values": "ROS templates",
     "sequence": "a Python lambda callback (C++ version: cpp/sequence.yml)",
     "shorthand": "custom Python templates",
     "sub_script_params_leak": "custom template ParamState (Python)",

@@ -34,6 +34,18 @@ TEST_CASE("pythonCode writes SMACHA's code-like strings bare only when they comp
   CHECK(pythonCode(Value::string("a.if")) == "'a.if'");
   CHECK(pythonCode(Value::string("x.1")) == "'x.1'");
   CHECK(pythonCode(Value::string("f()\n")) == "'f()\\n'");
+}
+
+TEST_CASE("pythonCode writes a call bare only when the text is one call") {
+  CHECK(pythonCode(Value::string("rospy.Duration(1, 'a)')")) == "rospy.Duration(1, 'a)')");
+  CHECK(pythonCode(Value::string("f(g([1, 2]), {'k': (3)})")) == "f(g([1, 2]), {'k': (3)})");
+  CHECK(pythonCode(Value::string("f(); import os; os.system('x')")) ==
+        "\"f(); import os; os.system('x')\"");
+  CHECK(pythonCode(Value::string("1); import os; os.system('x')")) ==
+        "\"1); import os; os.system('x')\"");
+  CHECK(pythonCode(Value::string("a + f(1)")) == "'a + f(1)'");
+  CHECK(pythonCode(Value::string("f(1) + g(2)")) == "'f(1) + g(2)'");
+  CHECK(pythonCode(Value::string("f(')")) == "\"f(')\"");
   CHECK(pythonCode(Value::newList({Value::real(std::nan(""))})) == "[float('nan')]");
 }
 

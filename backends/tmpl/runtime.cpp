@@ -177,9 +177,7 @@ void Exec::adopt(Frame* frame) {
   }
 }
 
-void Exec::step() {
-  checkSteps(++steps_);
-}
+void Exec::step() { checkSteps(++steps_); }
 
 void Exec::checkStack() const {
   auto here = reinterpret_cast<uintptr_t>(__builtin_frame_address(0));

@@ -53,5 +53,4 @@ class DepthGuard {
   DepthGuard& operator=(const DepthGuard&) = delete;
 };
 
-
 }  // namespace smachac::tmpl

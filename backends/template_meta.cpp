@@ -68,6 +68,12 @@ std::optional<TemplateMeta> parseTemplateMeta(std::string_view text) {
     if (!root.isDict()) return std::nullopt;
     MetaReader reader;
     if (const Value* variables = root.dict().findString("variables")) reader.entries(*variables);
+    if (const Value* outcomes = root.dict().findString("outcomes");
+        outcomes && outcomes->isList()) {
+      for (const Value& outcome : outcomes->list().items()) {
+        if (outcome.isString()) reader.meta.outcomes.push_back(outcome.s());
+      }
+    }
     return std::move(reader.meta);
   } catch (const tmpl::TemplateError&) {
     return std::nullopt;

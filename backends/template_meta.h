@@ -20,6 +20,7 @@ struct TemplateVariable {
 
 struct TemplateMeta {
   std::vector<TemplateVariable> variables;
+  std::vector<std::string> outcomes;  ///< the `outcomes` the template's states have
 };
 
 /// Parses the text of a meta block; nullopt when it is not YAML of the expected shape.

@@ -60,7 +60,7 @@ class Lowering {
     StateId id = module_.addState(std::move(state));
     module_.setRoot(id);
     if (!complete) return false;
-    Level level;
+    Level level{behaviorParams(module_.state(id).params, id)};
     lowerStates(*root.find("states"), id, level, {});
     return true;
   }
@@ -157,7 +157,9 @@ class Lowering {
       diags_.emit(DiagKind::NestingTooDeep, name.loc, kMaxContainerDepth);
       return;
     }
-    Level child{module_.state(id).params, level.depth + 1};
+    const ir::State& container = module_.state(id);
+    Level child{container.params, level.depth + 1};
+    if (!container.included_from.empty()) child.params = behaviorParams(container.params, id);
     lowerStates(*vars.find("states"), id, child, includes);
   }
 
@@ -178,10 +180,32 @@ class Lowering {
       return;
     }
     expandShorthand(sub_vars, diags_);
+    ir::Inclusion inclusion{sub->file, script, callerKeys(vars), {}};
+    if (const Value* own = sub_vars.find("params")) inclusion.script_params = *own;
     mergeCallerKeys(vars, sub_vars, name);
     if (const Value* params = vars.find("params")) level.params = *params;
-    included_from.insert(included_from.begin(), ir::Inclusion{sub->file, script});
+    included_from.insert(included_from.begin(), std::move(inclusion));
     lowerState(name, sub_vars, parent, level, includes, std::move(included_from));
+  }
+
+  /// The keys the including state sets besides `script`.
+  static std::vector<ir::Name> callerKeys(const Value& caller) {
+    std::vector<ir::Name> keys;
+    for (const ir::MapEntry& e : caller.asMap()) {
+      if (e.key != "script") keys.push_back({e.key, e.key_loc});
+    }
+    return keys;
+  }
+
+  /// The params of a behavior's root (the script's or a sub-script state's) as its children
+  /// inherit them: each value marked as that behavior's parameter.
+  std::optional<Value> behaviorParams(const std::optional<Value>& params, StateId scope) {
+    if (!params || !params->isMap()) return params;
+    Value marked = *params;
+    for (ir::MapEntry& e : marked.asMap()) {
+      e.value.behavior_param = module_.addBehaviorParam(scope, e.key);
+    }
+    return marked;
   }
 
   /// Cycle and depth checks; pushes the sub-script on `includes`.
@@ -204,8 +228,9 @@ class Lowering {
   }
 
   /// The caller's keys override the sub-script state's: mappings are merged (the caller's
-  /// entries win), other values replace; userdata, remapping and transitions are added when
-  /// the sub-script has none. `script` and `params` are consumed by the inclusion itself.
+  /// entries win), other values replace; userdata, remapping, transitions and autonomy (the
+  /// FlexBE target's) are added when the sub-script has none. `script` and `params` are
+  /// consumed by the inclusion itself.
   void mergeCallerKeys(const Value& caller, Value& sub, const ir::Name& name) {
     for (const ir::MapEntry& e : caller.asMap()) {
       if (e.key == "script") continue;
@@ -219,7 +244,8 @@ class Lowering {
         }
       } else if (existing) {
         *existing = e.value;
-      } else if (e.key == "userdata" || e.key == "remapping" || e.key == "transitions") {
+      } else if (e.key == "userdata" || e.key == "remapping" || e.key == "transitions" ||
+                 e.key == "autonomy") {
         sub.asMap().push_back(e);
       } else if (e.key != "params") {
         diags_.emit(DiagKind::IgnoredIncludeKey, e.key_loc, e.key, name.text);

@@ -1,14 +1,17 @@
 // The frontend's one entry point: a SMACHA script file → ir::Module.
 //
 //   script ::= {name, template, states, outcomes?, userdata?, manifest?, node_name?,
-//               function_name?, params? (ignored, as in SMACHA)}
+//               function_name?, params?}
 //   states ::= [ {NAME: state} ... ]          (nested lists are flattened)
 //   state  ::= container {states, template, ...} | include {script, ...} | leaf {template, ...}
 //
 // Shorthands are expanded at root and state keys; params are inherited and lookups resolved
-// per state in document order (smacha-behaviour.md §2); sub-scripts are included with the
-// caller's overrides; transitions are resolved to siblings or container outcomes. Every error
-// is reported (the walk goes on after one); the module is returned only when there were none.
+// per state in document order (smacha-behaviour.md §2). The script's `params` (ignored by
+// SMACHA) and those of a sub-script's state are behavior parameters: their children inherit
+// them marked as such (Value::behavior_param), so that FlexBE can refer to them. Sub-scripts
+// are included with the caller's overrides; transitions are resolved to siblings or container
+// outcomes. Every error is reported (the walk goes on after one); the module is returned only
+// when there were none.
 #pragma once
 
 #include <optional>

@@ -10,9 +10,9 @@ namespace smachac::frontend {
 namespace {
 
 const std::vector<std::string>& knownRootKeys() {
-  static const std::vector<std::string> keys = {"name",      "template",     "outcomes",
-                                                "states",    "userdata",     "manifest",
-                                                "node_name", "function_name"};
+  static const std::vector<std::string> keys = {"name",      "template",      "outcomes",
+                                                "states",    "userdata",      "manifest",
+                                                "node_name", "function_name", "params"};
   return keys;
 }
 
@@ -30,9 +30,7 @@ bool buildRootState(const ir::Value& root, ir::State& state, DiagnosticEmitter& 
   state.loc = root.loc;
   ir::Value typed = ir::Value::map({}, root.loc);
   for (const ir::MapEntry& e : root.asMap()) {
-    if (e.key == "params") {
-      diags.emit(DiagKind::RootParamsIgnored, e.key_loc);
-    } else if (e.key == "name") {
+    if (e.key == "name") {
       readName(e.value, "the script's `name`", state.name, diags);
     } else if (e.key == "states") {
       continue;  // lowered state by state; copying it would copy the whole script

@@ -1,6 +1,5 @@
 // The keys a script root may have, and the checks on them: unknown keys are warned about
-// (with a suggestion), script-level `params` are reported as ignored, required keys
-// (name, template, states) must be present.
+// (with a suggestion), required keys (name, template, states) must be present.
 #pragma once
 
 #include "ir/state.h"

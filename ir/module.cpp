@@ -39,6 +39,20 @@ const State& Module::state(StateId id) const {
   return states_[id.index];
 }
 
+uint32_t Module::addBehaviorParam(StateId scope, std::string name) {
+  behavior_params_.push_back({scope, std::move(name)});
+  return static_cast<uint32_t>(behavior_params_.size());
+}
+
+uint32_t Module::findBehaviorParam(StateId scope, std::string_view name) const {
+  for (size_t i = 0; i < behavior_params_.size(); ++i) {
+    if (behavior_params_[i].scope == scope && behavior_params_[i].name == name) {
+      return static_cast<uint32_t>(i + 1);
+    }
+  }
+  return 0;
+}
+
 void Module::adopt(StateId parent, StateId child) {
   state(parent).children.push_back(child);
   state(child).parent = parent;

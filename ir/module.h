@@ -12,6 +12,13 @@
 
 namespace smachac::ir {
 
+/// A parameter of a behavior: a key of the `params` of the script's root or of a state
+/// included from a sub-script (`scope`), whose values the lookups below it copy.
+struct BehaviorParam {
+  StateId scope;
+  std::string name;
+};
+
 class Module {
  public:
   StateId addState(State state);
@@ -32,6 +39,11 @@ class Module {
   /// States in document order (pre-order from the root); detached states are skipped.
   std::vector<StateId> preorder() const;
 
+  /// Registers a behavior parameter; the result is the non-zero `Value::behavior_param`.
+  uint32_t addBehaviorParam(StateId scope, std::string name);
+  /// The reference of parameter `name` of `scope`, or 0.
+  uint32_t findBehaviorParam(StateId scope, std::string_view name) const;
+
   /// The main script's file id, then every sub-script file, in first-read order.
   std::vector<uint32_t>& files() { return files_; }
   const std::vector<uint32_t>& files() const { return files_; }
@@ -40,6 +52,7 @@ class Module {
   std::deque<State> states_;
   StateId root_;
   std::vector<uint32_t> files_;
+  std::vector<BehaviorParam> behavior_params_;
 };
 
 }  // namespace smachac::ir

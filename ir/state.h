@@ -55,11 +55,14 @@ struct OutcomeMapEntry {
   std::vector<OutcomeCondition> conditions;
 };
 
-/// A state that came from a sub-script: the file it was read from and the `script:` key
-/// of the including state.
+/// A state that came from a sub-script: the file it was read from, the `script:` key of the
+/// including state, the other keys the including state set, and the sub-script state's own
+/// `params` (before the caller's were merged in).
 struct Inclusion {
   uint32_t file = 0;
   Name script;
+  std::vector<Name> caller_keys;
+  std::optional<Value> script_params;
 };
 
 struct State {

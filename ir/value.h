@@ -36,6 +36,10 @@ struct Value {
   SourceLoc loc;
   /// A string the script forced to stay a string (YAML `!str` tag): never rendered bare.
   bool forced_string = false;
+  /// Non-zero when this value is the value of a behavior parameter (`Module::addBehaviorParam`):
+  /// a `[params, x]` lookup of the script's or a sub-script's `params` copies it with the
+  /// value. Targets with behavior parameters (FlexBE) refer to the parameter instead.
+  uint32_t behavior_param = 0;
 
   static Value null(SourceLoc loc = {});
   static Value boolean(bool b, SourceLoc loc = {});

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "backends/flexbe/concurrence_transitions.h"
+#include "backends/flexbe/behavior_writer.h"
 #include "backends/flexbe/manual_sections.h"
 #include "backends/generator/generator.h"
 #include "backends/smach/python_extensions.h"
@@ -79,10 +79,12 @@ std::optional<std::vector<OutputFile>> emitFlexbe(const ir::Module& module, Emit
   env.addGlobal("flexbe_ros", tmpl::Value::integer(context.options.flexbe_ros));
   generator::GeneratorContext generator_context{
       env, converter, context.sources, context.diags, path, skipBlocks(context.options)};
-  const ir::Module connected = withConcurrenceTransitions(module);
-  std::optional<std::string> code = generator::generate(connected, generator_context);
-  if (!code) return std::nullopt;
-  std::vector<OutputFile> files = splitFiles(*code);
+  std::optional<std::vector<std::string>> codes = writeBehaviors(module, generator_context);
+  if (!codes) return std::nullopt;
+  std::vector<OutputFile> files;
+  for (const std::string& code : *codes) {
+    for (OutputFile& file : splitFiles(code)) files.push_back(std::move(file));
+  }
   if (!keepManualSections(files, context)) return std::nullopt;
   return files;
 }

@@ -89,7 +89,8 @@ class Generator {
     vars.dict().setString("name", str(root.name.text));
     tmpl::Value keys = tmpl::Value::newDict();
     addStateKeys(root, keys, ctx_.converter);
-    for (const char* key : {"manifest", "function_name", "node_name", "outcomes", "userdata"}) {
+    for (const char* key : {"manifest", "function_name", "node_name", "outcomes", "userdata",
+                            "input_keys", "output_keys"}) {
       if (const tmpl::Value* v = keys.dict().findString(key)) vars.dict().setString(key, *v);
     }
     for (size_t b = 0; b < kBufferCount; ++b) {

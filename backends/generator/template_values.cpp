@@ -15,6 +15,10 @@ std::string backtickForm(std::string_view code) {
 }
 
 tmpl::Value ValueConverter::convert(const ir::Value& value) {
+  if (value.behavior_param != 0 && !param_refs_.empty()) {
+    auto ref = param_refs_.find(value.behavior_param);
+    if (ref != param_refs_.end()) return tmpl::Value::string(backtickForm("self." + ref->second));
+  }
   switch (value.kind()) {
     case ir::ValueKind::Null:
       return tmpl::Value::none();
@@ -56,6 +60,10 @@ tmpl::Value ValueConverter::names(const std::vector<ir::Name>& names) {
   items.reserve(names.size());
   for (const ir::Name& name : names) items.push_back(tmpl::Value::string(name.text));
   return tmpl::Value::newList(std::move(items));
+}
+
+void ValueConverter::referToBehaviorParams(std::unordered_map<uint32_t, std::string> refs) {
+  param_refs_ = std::move(refs);
 }
 
 bool ValueConverter::isForcedString(const tmpl::Value& value) const {

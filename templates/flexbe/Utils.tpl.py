@@ -130,6 +130,21 @@ conditions=[
 # {% for outcome in outcomes %}x:{{ 30 + 100 * loop.index0 }} y:365{% if not loop.last %}, {% endif %}{% endfor %}
 {%- endmacro %}
 
+{# A behavior name as a file stem: lower case, spaces and dashes as `_`. #}
+{% macro behavior_file(name) -%}
+{{ (name | lower).replace(' ', '_').replace('-', '_') }}
+{%- endmacro %}
+
+{# A behavior parameter's type in the manifest (FlexBE's text, numeric and boolean types), and
+   its default as the manifest writes it. #}
+{% macro parameter_type(value) -%}
+{% if value is boolean %}boolean{% elif value is number %}numeric{% else %}text{% endif %}
+{%- endmacro %}
+
+{% macro parameter_default(value) -%}
+{% if value is boolean or value is number %}{{ value | pyliteral }}{% else %}{{ value }}{% endif %}
+{%- endmacro %}
+
 {# A behavior name as a Python class name: words capitalised, non-word characters dropped. #}
 {% macro class_prefix(name) -%}
 {% for word in (name | replace('-', ' ') | replace('_', ' ')).split() %}{{ word[0] | upper }}{{ word[1:] }}{% endfor %}

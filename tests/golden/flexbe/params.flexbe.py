@@ -15,8 +15,6 @@
 	<!-- Contained Behaviors -->
 
 	<!-- Available Parameters -->
-	<params>
-	</params>
 
 
 </behavior>

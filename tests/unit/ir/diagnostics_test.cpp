@@ -39,9 +39,9 @@ TEST_CASE("warning options") {
   CHECK_FALSE(options.apply("-Wno-unknown-root-key").has_value());
   CHECK(options.severityOf(DiagKind::UnknownRootKey) == Severity::Ignored);
   CHECK_FALSE(options.apply("-Werror").has_value());
-  CHECK(options.severityOf(DiagKind::RootParamsIgnored) == Severity::Error);
-  CHECK_FALSE(options.apply("-Wno-error=root-params-ignored").has_value());
-  CHECK(options.severityOf(DiagKind::RootParamsIgnored) == Severity::Warning);
+  CHECK(options.severityOf(DiagKind::StatesWithScript) == Severity::Error);
+  CHECK_FALSE(options.apply("-Wno-error=states-with-script").has_value());
+  CHECK(options.severityOf(DiagKind::StatesWithScript) == Severity::Warning);
   CHECK_FALSE(options.apply("-Wno-duplicate-key").has_value());
   CHECK(options.severityOf(DiagKind::DuplicateKey) == Severity::Error);  // errors stay errors
   CHECK(*options.apply("-Wunknown-rot-key") ==

@@ -92,7 +92,8 @@ class MetaOutcomes {
 class Writer {
  public:
   Writer(const ir::Module& module, generator::GeneratorContext& context)
-      : module_(withExplicitTransitions(module, MetaOutcomes(context.env))), context_(context) {}
+      : module_(withExplicitTransitions(module, MetaOutcomes(context.env), context.diags)),
+        context_(context) {}
 
   std::optional<std::vector<std::string>> run() {
     ir::StateId root = module_.root();

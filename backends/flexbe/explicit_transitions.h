@@ -10,6 +10,12 @@
 //     default outcome.
 //   * Any outcome still without a transition goes to the container outcome of the same name,
 //     when there is one (else the checks have already reported it, or it stays unconnected).
+//   * FlexBE's ConcurrencyContainer has no default outcome: when its children have finished
+//     and no condition holds, it waits. A Concurrence with a `default_outcome` gets the
+//     template argument `default_conditions`: every combination of its children's outcomes
+//     that no outcome_map entry matches ([[child, outcome], ...] each), which its template adds
+//     after the outcome_map's conditions, leading to the default outcome. Beyond 64 combinations
+//     the default outcome is left out, with warning flexbe-default-outcome-lost.
 #pragma once
 
 #include <functional>
@@ -17,14 +23,16 @@
 #include <vector>
 
 #include "ir/module.h"
+#include "ir/support/diagnostic_emitter.h"
 
 namespace smachac::backends::flexbe {
 
 /// The outcomes a template's meta block declares, by template name (empty when unknown).
 using TemplateOutcomes = std::function<std::vector<std::string>(const std::string&)>;
 
-/// A copy of `module` with the transitions above made explicit.
+/// A copy of `module` with the transitions and default conditions above made explicit.
 ir::Module withExplicitTransitions(const ir::Module& module,
-                                   const TemplateOutcomes& template_outcomes);
+                                   const TemplateOutcomes& template_outcomes,
+                                   DiagnosticEmitter& diags);
 
 }  // namespace smachac::backends::flexbe

@@ -4,7 +4,9 @@ description: >
   A FlexBE ConcurrencyContainer (from a SMACH Concurrence), declared like a
   StateMachine (which it extends). Its conditions come from the outcome_map,
   one conjunction per outcome; the first satisfied wins. FlexBE has no
-  default outcome: default_outcome is ignored.
+  default outcome: the FlexBE target sets `default_conditions`, every
+  combination of the children's outcomes, each a list of [child, outcome],
+  which lead to default_outcome after the outcome_map's conditions.
 language: Python
 framework: FlexBE
 type: Container
@@ -36,6 +38,11 @@ variables:
 - - remapping:
       description: The parent's userdata key for each of the container's keys.
       type: dict of str
+- - default_conditions:
+      description: >
+        Set by the FlexBE target: the combinations of the children's outcomes
+        that lead to default_outcome, each a list of [child, outcome].
+      type: list
 input_keys: []
 output_keys: []
 outcomes: []
@@ -43,4 +50,4 @@ outcomes: []
 {% extends "StateMachine.tpl.py" %}
 {% from "Utils.tpl.py" import render_conditions %}
 {% set container_class = 'ConcurrencyContainer' %}
-{% set container_extra = ', ' ~ render_conditions(outcome_map if outcome_map is defined else {}) %}
+{% set container_extra = ', ' ~ render_conditions(outcome_map if outcome_map is defined else {}, default_outcome if default_outcome is defined else '', default_conditions if default_conditions is defined else []) %}

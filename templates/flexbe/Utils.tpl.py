@@ -95,12 +95,18 @@ autonomy={{ '{' }}
 remapping={{ '{' }}{{ ns.items | join(', ') }}{{ '}' }}
 {%- endmacro %}
 
-{# ConcurrencyContainer conditions from a SMACH outcome_map: one conjunction per outcome. #}
-{% macro render_conditions(outcome_map) -%}
+{# ConcurrencyContainer conditions from a SMACH outcome_map: one conjunction per outcome, then
+   one per combination of the children's outcomes for the default outcome. #}
+{% macro render_conditions(outcome_map, default_outcome='', default_conditions=[]) -%}
+{% set ns = namespace(items=[]) -%}
+{% for outcome, condition in outcome_map.items() | sort -%}
+{% do ns.items.append((outcome, condition.items() | sort)) %}
+{%- endfor -%}
+{% for condition in default_conditions %}{% do ns.items.append((default_outcome, condition)) %}{% endfor -%}
 conditions=[
-{%- for outcome, condition in outcome_map.items() | sort -%}
+{%- for outcome, pairs in ns.items -%}
 ({{ outcome | pyrepr }}, [
-{%- for child, child_outcome in condition.items() | sort -%}
+{%- for child, child_outcome in pairs -%}
 ({{ child | pyrepr }}, {{ child_outcome | pyrepr }}){% if not loop.last %}, {% endif %}
 {%- endfor %}]){% if not loop.last %}, {% endif %}
 {%- endfor %}]

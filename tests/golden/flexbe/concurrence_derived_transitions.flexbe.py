@@ -123,7 +123,7 @@ class DerivedSM(Behavior):
 
 
         # x:30 y:365, x:130 y:365
-        _sm_con = ConcurrencyContainer(outcomes=['all_done', 'broken'], conditions=[('all_done', [('BRANCH', 'finished'), ('RANDOM', 'a'), ('WAIT', 'done')]), ('broken', [('BRANCH', 'failed')])])
+        _sm_con = ConcurrencyContainer(outcomes=['all_done', 'broken'], conditions=[('all_done', [('BRANCH', 'finished'), ('RANDOM', 'a'), ('WAIT', 'done')]), ('broken', [('BRANCH', 'failed')]), ('broken', [('WAIT', 'done'), ('RANDOM', 'a'), ('WAIT_MORE', 'done'), ('BRANCH', 'preempted')]), ('broken', [('WAIT', 'done'), ('RANDOM', 'b'), ('WAIT_MORE', 'done'), ('BRANCH', 'finished')]), ('broken', [('WAIT', 'done'), ('RANDOM', 'b'), ('WAIT_MORE', 'done'), ('BRANCH', 'preempted')])])
 
         with _sm_con:
             # x:30 y:40

@@ -80,7 +80,7 @@ class AllVariablesSM(Behavior):
         # [/MANUAL_CREATE]
 
         # x:30 y:365, x:130 y:365, x:230 y:365
-        _sm_arms = ConcurrencyContainer(outcomes=['succeeded', 'aborted', 'preempted'], conditions=[('preempted', [('FOLLOW', 'preempted'), ('MOVE', 'preempted')]), ('succeeded', [('FOLLOW', 'succeeded'), ('MOVE', 'succeeded')])])
+        _sm_arms = ConcurrencyContainer(outcomes=['succeeded', 'aborted', 'preempted'], conditions=[('preempted', [('FOLLOW', 'preempted'), ('MOVE', 'preempted')]), ('succeeded', [('FOLLOW', 'succeeded'), ('MOVE', 'succeeded')]), ('aborted', [('MOVE', 'succeeded'), ('FOLLOW', 'aborted')]), ('aborted', [('MOVE', 'succeeded'), ('FOLLOW', 'preempted')]), ('aborted', [('MOVE', 'aborted'), ('FOLLOW', 'succeeded')]), ('aborted', [('MOVE', 'aborted'), ('FOLLOW', 'aborted')]), ('aborted', [('MOVE', 'aborted'), ('FOLLOW', 'preempted')]), ('aborted', [('MOVE', 'preempted'), ('FOLLOW', 'succeeded')]), ('aborted', [('MOVE', 'preempted'), ('FOLLOW', 'aborted')])])
 
         with _sm_arms:
             # x:430 y:40

@@ -868,7 +868,7 @@ class SmSM(Behavior):
 
 
         # x:30 y:365, x:130 y:365, x:230 y:365
-        _sm_pick_blocks = ConcurrencyContainer(outcomes=['succeeded', 'aborted', 'preempted'], input_keys=['block_1_limb', 'left_limb_joint_start_positions', 'block_model_1_pick_pose', 'block_2_limb', 'right_limb_joint_start_positions', 'block_model_2_pick_pose', 'hover_offset'], conditions=[('preempted', [('PICK_BLOCK_1', 'preempted'), ('PICK_BLOCK_2', 'preempted')]), ('succeeded', [('PICK_BLOCK_1', 'succeeded'), ('PICK_BLOCK_2', 'succeeded')])])
+        _sm_pick_blocks = ConcurrencyContainer(outcomes=['succeeded', 'aborted', 'preempted'], input_keys=['block_1_limb', 'left_limb_joint_start_positions', 'block_model_1_pick_pose', 'block_2_limb', 'right_limb_joint_start_positions', 'block_model_2_pick_pose', 'hover_offset'], conditions=[('preempted', [('PICK_BLOCK_1', 'preempted'), ('PICK_BLOCK_2', 'preempted')]), ('succeeded', [('PICK_BLOCK_1', 'succeeded'), ('PICK_BLOCK_2', 'succeeded')]), ('aborted', [('PICK_BLOCK_1', 'succeeded'), ('PICK_BLOCK_2', 'aborted')]), ('aborted', [('PICK_BLOCK_1', 'succeeded'), ('PICK_BLOCK_2', 'preempted')]), ('aborted', [('PICK_BLOCK_1', 'aborted'), ('PICK_BLOCK_2', 'succeeded')]), ('aborted', [('PICK_BLOCK_1', 'aborted'), ('PICK_BLOCK_2', 'aborted')]), ('aborted', [('PICK_BLOCK_1', 'aborted'), ('PICK_BLOCK_2', 'preempted')]), ('aborted', [('PICK_BLOCK_1', 'preempted'), ('PICK_BLOCK_2', 'succeeded')]), ('aborted', [('PICK_BLOCK_1', 'preempted'), ('PICK_BLOCK_2', 'aborted')])])
 
         with _sm_pick_blocks:
             # x:230 y:160

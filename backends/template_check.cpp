@@ -12,6 +12,7 @@
 #include "backends/cpp/cpp_extensions.h"
 #include "backends/generator/template_catalog.h"
 #include "backends/smach/python_extensions.h"
+#include "backends/smach/smach_lint.h"
 #include "backends/template_meta.h"
 #include "backends/tmpl/environment.h"
 #include "ir/support/suggest.h"
@@ -192,6 +193,7 @@ bool checkTemplates(const ir::Module& module, std::string_view target,
   if (builtinSets(target).empty()) return true;
   size_t errors_before = diags.errorCount();
   Checker(target, template_dirs, diags).run(module);
+  if (target == "smach") smach::checkSmachDivergences(module, diags);
   return diags.errorCount() == errors_before;
 }
 

@@ -7,7 +7,9 @@
 //   * every other key of the state is a variable the meta block declares
 //     [unknown-template-variable, warning, with "did you mean"];
 //   * literal values have a declared type (str, int, float, bool, list…, dict…)
-//     [template-variable-type, warning].
+//     [template-variable-type, warning];
+//   * for the smach target, what its SMACHA-compatible output does differently from C++
+//     (smach/smach_lint.h) [smach-*, warnings].
 // Templates without a meta block, and types the checker does not know (message classes,
 // functions), are not checked.
 #pragma once

@@ -10,9 +10,10 @@ namespace smachac::frontend {
 namespace {
 
 const std::vector<std::string>& knownRootKeys() {
-  static const std::vector<std::string> keys = {"name",      "template",      "outcomes",
-                                                "states",    "userdata",      "manifest",
-                                                "node_name", "function_name", "params"};
+  // import_modules and from_imports: the imports a ROS script declares (templates/smach_ros).
+  static const std::vector<std::string> keys = {
+      "name",      "template",      "outcomes", "states",         "userdata",    "manifest",
+      "node_name", "function_name", "params",   "import_modules", "from_imports"};
   return keys;
 }
 

@@ -52,7 +52,8 @@ void deriveFromOutcomeMap(const ir::State& concurrence, ir::State& child,
 }
 
 /// Whether an outcome_map entry holds whenever the children finish with `combination`, so
-/// that a default condition for it would never be reached.
+/// that a default condition for it would never be reached. Entries without conditions do not
+/// count: SMACH 2.5 never chooses them (stdlib/runtime/README.md), and they are not written.
 bool matchesOutcomeMap(const ir::State& concurrence, const ir::List& combination) {
   auto finishedWith = [&](const ir::OutcomeCondition& c) {
     return std::any_of(combination.begin(), combination.end(), [&](const ir::Value& pair) {
@@ -62,7 +63,8 @@ bool matchesOutcomeMap(const ir::State& concurrence, const ir::List& combination
   };
   return std::any_of(concurrence.outcome_map.begin(), concurrence.outcome_map.end(),
                      [&](const ir::OutcomeMapEntry& entry) {
-                       return std::all_of(entry.conditions.begin(), entry.conditions.end(),
+                       return !entry.conditions.empty() &&
+                              std::all_of(entry.conditions.begin(), entry.conditions.end(),
                                           finishedWith);
                      });
 }

@@ -13,9 +13,10 @@
 //   * FlexBE's ConcurrencyContainer has no default outcome: when its children have finished
 //     and no condition holds, it waits. A Concurrence with a `default_outcome` gets the
 //     template argument `default_conditions`: every combination of its children's outcomes
-//     that no outcome_map entry matches ([[child, outcome], ...] each), which its template adds
-//     after the outcome_map's conditions, leading to the default outcome. Beyond 64 combinations
-//     the default outcome is left out, with warning flexbe-default-outcome-lost.
+//     that no outcome_map entry with conditions matches ([[child, outcome], ...] each), which
+//     its template adds after the outcome_map's conditions, leading to the default outcome.
+//     Beyond 64 combinations the default outcome is left out, with warning
+//     flexbe-default-outcome-lost.
 #pragma once
 
 #include <functional>

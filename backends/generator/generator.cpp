@@ -1,6 +1,7 @@
 // The recursive walk: root level, leaves, containers, and the base render.
 #include "backends/generator/generator.h"
 
+#include <initializer_list>
 #include <set>
 #include <tuple>
 
@@ -73,6 +74,7 @@ class Generator {
   void seedFromBase(const std::string& base, const ir::State& root, Level& level) {
     tmpl::Value context = tmpl::Value::newDict();
     context.dict().setString("name", str(root.name.text));
+    copyRootKeys(root, {"import_modules", "from_imports"}, context);  // seeded: written once
     for (const BufferSpec& spec : bufferSpecs()) {
       tmpl::Value empty = str("");
       if (spec.kind == BufferKind::Keyed) {
@@ -84,15 +86,23 @@ class Generator {
     addExports(runner_.exportsRunningBlocks(base, context), level);
   }
 
+  /// Copies the given keys of the script's root, where present, into vars.
+  void copyRootKeys(const ir::State& root, std::initializer_list<const char*> names,
+                    tmpl::Value& vars) {
+    tmpl::Value keys = tmpl::Value::newDict();
+    addStateKeys(root, keys, ctx_.converter);
+    for (const char* key : names) {
+      if (const tmpl::Value* v = keys.dict().findString(key)) vars.dict().setString(key, *v);
+    }
+  }
+
   tmpl::Value baseVariables(const ir::State& root, const Level& level) {
     tmpl::Value vars = tmpl::Value::newDict();
     vars.dict().setString("name", str(root.name.text));
-    tmpl::Value keys = tmpl::Value::newDict();
-    addStateKeys(root, keys, ctx_.converter);
-    for (const char* key : {"manifest", "function_name", "node_name", "outcomes", "userdata",
-                            "input_keys", "output_keys"}) {
-      if (const tmpl::Value* v = keys.dict().findString(key)) vars.dict().setString(key, *v);
-    }
+    copyRootKeys(root,
+                 {"manifest", "function_name", "node_name", "outcomes", "userdata", "input_keys",
+                  "output_keys", "import_modules", "from_imports"},
+                 vars);
     for (size_t b = 0; b < kBufferCount; ++b) {
       vars.dict().setString(bufferSpecs()[b].name, level.buffers.value(b, /*strip=*/true));
     }

@@ -1,17 +1,23 @@
 // check-concurrence: Concurrence containers, with SMACH's semantics (concurrence.py): every
-// child runs; when all have finished, the outcome_map entries are checked in order (SMACHA
-// renders them sorted by outcome) and the last one whose conditions all hold gives the
-// outcome; if none holds, the default_outcome does.
-//   * missing-key                  no `default_outcome` (SMACH requires one)
-//   * unknown-default-outcome      `default_outcome` is not an outcome of the concurrence
-//   * unknown-outcome-map-outcome  an `outcome_map` key is not an outcome of the concurrence
-//   * unknown-outcome-map-child    a condition names a state that is not a child
-//   * undeclared-outcome           a condition names an outcome its child does not declare
-//   * shadowed-outcome-map-entry   an entry that can never be chosen: an entry checked after
-//                                  it needs a subset of its conditions (or the same ones)
-//   * unused-container-outcome     an outcome neither in `outcome_map` nor the default
-//   * concurrent-write             two children write the same userdata key (after remapping)
-//   * ignored-concurrence-key      `outcome_map` or `default_outcome` on another kind of state
+// child runs; when all have finished, the satisfied `outcome_map` entry with the most
+// conditions gives the outcome, the first in map order (sorted by outcome) among equals; an
+// entry without conditions is never chosen; if none is chosen, the default_outcome is. That is
+// SMACH 2.5's rule, stated in stdlib/runtime/README.md ("Choosing among outcome_map
+// entries"); older SMACH takes the last satisfied entry instead, so where the two differ this
+// check says so rather than claim one behaviour.
+//   * missing-key                    no `default_outcome` (SMACH requires one)
+//   * unknown-default-outcome        `default_outcome` is not an outcome of the concurrence
+//   * unknown-outcome-map-outcome    an `outcome_map` key is not an outcome of the concurrence
+//   * unknown-outcome-map-child      a condition names a state that is not a child
+//   * undeclared-outcome             a condition names an outcome its child does not declare
+//   * shadowed-outcome-map-entry     an entry SMACH 2.5 never chooses: it has no conditions,
+//                                    or an earlier entry has exactly the same ones
+//   * version-dependent-outcome-map  two entries that can hold together (no child needs two
+//                                    outcomes) of which SMACH 2.5 chooses the earlier (more
+//                                    conditions, or as many) and older SMACH the later
+//   * unused-container-outcome       an outcome neither in `outcome_map` nor the default
+//   * concurrent-write               two children write the same userdata key (after remapping)
+//   * ignored-concurrence-key        `outcome_map` or `default_outcome` on another kind of state
 #include <algorithm>
 #include <string>
 #include <unordered_map>
@@ -27,10 +33,13 @@
 namespace smachac::passes {
 namespace {
 
+/// An entry's conditions as (child, child outcome), sorted.
+using Conditions = std::vector<std::pair<std::string_view, std::string_view>>;
+
 /// An outcome_map entry whose conditions all name real children and outcomes.
 struct ValidEntry {
   const ir::OutcomeMapEntry* entry;
-  std::vector<std::pair<std::string_view, std::string_view>> conditions;  ///< sorted
+  Conditions conditions;
 };
 
 class ConcurrenceChecker {
@@ -50,7 +59,7 @@ class ConcurrenceChecker {
     for (const ir::OutcomeMapEntry& entry : c_.outcome_map) {
       if (checkEntry(entry)) valid.push_back(validEntry(entry));
     }
-    reportShadowed(valid);
+    reportOrderRules(valid);
     reportUnusedOutcomes();
     reportConcurrentWrites();
   }
@@ -108,24 +117,70 @@ class ConcurrenceChecker {
     return valid;
   }
 
-  /// Entries are checked sorted by outcome and the last that holds wins, so an entry is
-  /// shadowed by any later entry whose conditions are a subset of its own.
-  void reportShadowed(std::vector<ValidEntry>& entries) {
+  /// Reports what SMACH 2.5 and older SMACH decide differently, in map order.
+  void reportOrderRules(std::vector<ValidEntry>& entries) {
     std::sort(entries.begin(), entries.end(), [](const ValidEntry& a, const ValidEntry& b) {
       return a.entry->outcome.text < b.entry->outcome.text;
     });
     for (size_t i = 0; i < entries.size(); ++i) {
-      const auto& conditions = entries[i].conditions;
+      reportNeverChosen(entries, i);
       for (size_t j = i + 1; j < entries.size(); ++j) {
-        const auto& later = entries[j].conditions;
-        if (!std::includes(conditions.begin(), conditions.end(), later.begin(), later.end())) {
-          continue;
-        }
-        diags_.emit(DiagKind::ShadowedOutcomeMapEntry, entries[i].entry->outcome.loc,
-                    entries[i].entry->outcome.text, entries[j].entry->outcome.text);
-        break;
+        reportVersionDependent(entries[i], entries[j]);
       }
     }
+  }
+
+  /// SMACH 2.5 never chooses an entry without conditions, nor one after an entry with exactly
+  /// the same conditions (the first wins ties); older SMACH may choose either.
+  void reportNeverChosen(const std::vector<ValidEntry>& entries, size_t j) {
+    const ir::Name& outcome = entries[j].entry->outcome;
+    if (entries[j].conditions.empty()) {
+      diags_.emit(DiagKind::ShadowedOutcomeMapEntry, outcome.loc, outcome.text,
+                  "it has no conditions; older SMACH and the ROS 2 branch choose it when no "
+                  "entry after it holds");
+      return;
+    }
+    for (size_t i = 0; i < j; ++i) {
+      if (entries[i].conditions != entries[j].conditions) continue;
+      diags_.emit(DiagKind::ShadowedOutcomeMapEntry, outcome.loc, outcome.text,
+                  "`" + entries[i].entry->outcome.text +
+                      "` has the same conditions and comes first; older SMACH and the ROS 2 "
+                      "branch choose `" +
+                      outcome.text + "` instead (last in order)");
+      return;
+    }
+  }
+
+  /// `earlier` and `later` in map order, both with conditions and not the same ones.
+  void reportVersionDependent(const ValidEntry& earlier, const ValidEntry& later) {
+    size_t earlier_size = earlier.conditions.size();
+    size_t later_size = later.conditions.size();
+    if (later_size == 0 || earlier_size < later_size || earlier.conditions == later.conditions ||
+        !canHoldTogether(earlier.conditions, later.conditions)) {
+      return;
+    }
+    const ir::Name& chosen = earlier.entry->outcome;
+    const ir::Name& last = later.entry->outcome;
+    diags_.emit(
+        DiagKind::VersionDependentOutcomeMap, chosen.loc, chosen.text, last.text, chosen.text,
+        earlier_size > later_size ? "more conditions" : "as many conditions and first in order",
+        last.text);
+  }
+
+  /// Whether no child needs two different outcomes; both lists sorted by child.
+  static bool canHoldTogether(const Conditions& a, const Conditions& b) {
+    auto x = a.begin();
+    auto y = b.begin();
+    while (x != a.end() && y != b.end()) {
+      if (x->first < y->first) {
+        ++x;
+      } else if (y->first < x->first) {
+        ++y;
+      } else if (x++->second != y++->second) {
+        return false;
+      }
+    }
+    return true;
   }
 
   void reportUnusedOutcomes() {

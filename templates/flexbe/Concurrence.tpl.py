@@ -3,7 +3,9 @@ name: Concurrence
 description: >
   A FlexBE ConcurrencyContainer (from a SMACH Concurrence), declared like a
   StateMachine (which it extends). Its conditions come from the outcome_map,
-  one conjunction per outcome; the first satisfied wins. FlexBE has no
+  one conjunction per outcome, in the order SMACH 2.5 prefers them (more
+  conditions first, then by outcome; none for an empty entry); the first
+  satisfied wins. FlexBE has no
   default outcome: the FlexBE target sets `default_conditions`, every
   combination of the children's outcomes, each a list of [child, outcome],
   which lead to default_outcome after the outcome_map's conditions.

@@ -36,7 +36,7 @@ output_keys: []
 outcomes: []
 {% endblock meta %}
 {% extends "State.tpl.py" %}
-{% from "Utils.tpl.py" import render_value, layout, render_transitions, render_autonomy, render_remapping, class_ref, import_state, behavior_file, class_prefix %}
+{% from "Utils.tpl.py" import render_value, layout, render_transitions, render_autonomy, remapping_argument, class_ref, import_state, behavior_file, class_prefix %}
 {% set state_module = flexbe_package ~ '.' ~ behavior_file(behavior_name) ~ '_sm' %}
 {% set state_class = class_prefix(behavior_name) ~ 'SM' %}
 
@@ -45,5 +45,5 @@ outcomes: []
 OperatableStateMachine.add({{ name | pyrepr }}, self.use_behavior({{ class_ref(defined_headers, state_module, state_class) }}, {{ behavior_id | pyrepr }}
 {%- if behavior_parameters is defined and behavior_parameters %}, parameters={{ '{' }}
 {%- for key, value in behavior_parameters.items() %}{{ key | pyrepr }}: {{ render_value(value) }}{% if not loop.last %}, {% endif %}{% endfor %}{{ '}' }}
-{%- endif %}), {{ render_transitions(transitions if transitions is defined else {}) }}, {{ render_autonomy(transitions if transitions is defined else {}, autonomy) }}, {{ render_remapping(input_keys if input_keys is defined else [], output_keys if output_keys is defined else [], remapping) }})
+{%- endif %}), {{ render_transitions(transitions if transitions is defined else {}) }}, {{ render_autonomy(transitions if transitions is defined else {}, autonomy) }}{{ remapping_argument(input_keys if input_keys is defined else [], output_keys if output_keys is defined else [], remapping) }})
 {% endblock body %}

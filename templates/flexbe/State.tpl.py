@@ -41,7 +41,7 @@ input_keys: []
 output_keys: []
 outcomes: []
 {% endblock meta %}
-{% from "Utils.tpl.py" import render_value, render_list, render_userdata, parent_var, layout, render_transitions, render_autonomy, render_remapping, class_ref, import_state %}
+{% from "Utils.tpl.py" import render_value, render_list, render_userdata, parent_var, layout, render_transitions, render_autonomy, remapping_argument, class_ref, import_state %}
 {#- A state template sets `state_module`/`state_class` at its top level (empty for the
     default); by default the class is `class_name` in the behavior's states module. #}
 {% set local_vars = ['default_module', 'state_module', 'state_class', 'state_args'] %}
@@ -62,5 +62,5 @@ outcomes: []
 
 {% block body %}
 {{ layout(defined_headers) }}
-OperatableStateMachine.add({{ name | pyrepr }}, {{ class_ref(defined_headers, state_module or default_module, state_class or class_name) }}({{ state_args | default('') }}), {{ render_transitions(transitions if transitions is defined else {}) }}, {{ render_autonomy(transitions if transitions is defined else {}, autonomy) }}, {{ render_remapping(input_keys if input_keys is defined else [], output_keys if output_keys is defined else [], remapping) }})
+OperatableStateMachine.add({{ name | pyrepr }}, {{ class_ref(defined_headers, state_module or default_module, state_class or class_name) }}({{ state_args | default('') }}), {{ render_transitions(transitions if transitions is defined else {}) }}, {{ render_autonomy(transitions if transitions is defined else {}, autonomy) }}{{ remapping_argument(input_keys if input_keys is defined else [], output_keys if output_keys is defined else [], remapping) }})
 {% endblock body %}

@@ -37,7 +37,7 @@ input_keys: []
 output_keys: []
 outcomes: []
 {% endblock meta %}
-{% from "Utils.tpl.py" import container_args, render_userdata, parent_var, layout, render_transitions, render_autonomy, render_remapping, outcome_layout %}
+{% from "Utils.tpl.py" import container_args, render_userdata, parent_var, layout, render_transitions, render_autonomy, remapping_argument, outcome_layout %}
 {#- Concurrence extends this template: it sets container_class and container_extra. #}
 {% set local_vars = ['sm_var', 'container_class', 'container_extra'] %}
 {% set sm_var = '_sm_' + name | lower %}
@@ -64,5 +64,5 @@ with {{ sm_var }}:
 
 {% block body %}
 {{ layout(defined_headers) }}
-OperatableStateMachine.add({{ name | pyrepr }}, {{ sm_var }}, {{ render_transitions(transitions if transitions is defined else {}) }}, {{ render_autonomy(transitions if transitions is defined else {}, autonomy) }}, {{ render_remapping(input_keys if input_keys is defined else [], output_keys if output_keys is defined else [], remapping) }})
+OperatableStateMachine.add({{ name | pyrepr }}, {{ sm_var }}, {{ render_transitions(transitions if transitions is defined else {}) }}, {{ render_autonomy(transitions if transitions is defined else {}, autonomy) }}{{ remapping_argument(input_keys if input_keys is defined else [], output_keys if output_keys is defined else [], remapping) }})
 {% endblock body %}

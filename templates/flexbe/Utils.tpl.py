@@ -95,12 +95,27 @@ autonomy={{ '{' }}
 remapping={{ '{' }}{{ ns.items | join(', ') }}{{ '}' }}
 {%- endmacro %}
 
+{# The remapping as the last argument of `OperatableStateMachine.add`: `, remapping={...}`,
+   or nothing when it would be empty, as FlexBE's own code generator writes it (its editor
+   cannot parse `remapping={}`). #}
+{% macro remapping_argument(input_keys, output_keys, remapping) -%}
+{% set text = render_remapping(input_keys, output_keys, remapping) -%}
+{% if text != 'remapping={}' %}, {{ text }}{% endif -%}
+{%- endmacro %}
+
 {# ConcurrencyContainer conditions from a SMACH outcome_map: one conjunction per outcome, then
-   one per combination of the children's outcomes for the default outcome. #}
+   one per combination of the children's outcomes for the default outcome. FlexBE takes the
+   first that holds, so the entries come in SMACH 2.5's order (stdlib/runtime/README.md,
+   "Choosing among outcome_map entries"): more conditions first, then sorted by outcome;
+   entries without conditions, which SMACH 2.5 never chooses, are left out. #}
 {% macro render_conditions(outcome_map, default_outcome='', default_conditions=[]) -%}
-{% set ns = namespace(items=[]) -%}
+{% set ranked = namespace(items=[]) -%}
 {% for outcome, condition in outcome_map.items() | sort -%}
-{% do ns.items.append((outcome, condition.items() | sort)) %}
+{% if condition | length > 0 %}{% do ranked.items.append((condition | length, outcome, condition.items() | sort)) %}{% endif %}
+{%- endfor -%}
+{% set ns = namespace(items=[]) -%}
+{% for size, outcome, pairs in ranked.items | sort(attribute='0', reverse=true) -%}
+{% do ns.items.append((outcome, pairs)) %}
 {%- endfor -%}
 {% for condition in default_conditions %}{% do ns.items.append((default_outcome, condition)) %}{% endfor -%}
 conditions=[

@@ -113,10 +113,12 @@ def {{ lambda_callback_name(output_key, state_name, state_uuid) }}(userdata):
 {%- endmacro %}
 
 {# Python for a state class's __init__ (8 spaces deep): look the named callbacks up among
-   the module's functions and register their keys and outcomes with the state. #}
+   the module's functions and register their keys and outcomes with the state. They run in
+   the order of the constructor's `callbacks` list, the script's order (SMACHA sorts them by
+   function name; smachac keeps the script's order, as its C++ target does). #}
 {% macro render_init_callbacks() %}
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 

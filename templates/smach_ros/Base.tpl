@@ -26,6 +26,12 @@ variables:
 - - function_name:
       description: The name of the generated main function (default main).
       type: str
+- - import_modules:
+      description: Modules that the script's code uses, each written `import <module>`.
+      type: list of str
+- - from_imports:
+      description: Names that the script's code uses, by module (`from <module> import <name>`).
+      type: dict of list of str
 input_keys: []
 output_keys: []
 outcomes: []

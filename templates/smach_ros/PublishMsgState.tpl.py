@@ -28,6 +28,15 @@ variables:
 - - callbacks:
       description: Callbacks by output key, e.g. to build the message.
       type: dict of str
+- - import_modules:
+      description: Modules that this state's code uses, each written `import <module>`.
+      type: list of str
+- - from_imports:
+      description: >
+        Names that this state's code uses (service, action or message types,
+        goal classes, callbacks), by module, each written `from <module> import
+        <name>` (e.g. {std_srvs.srv: [Trigger]}).
+      type: dict of list of str
 input_keys:
 - msg:
     description: The message, or a list for a point or a pose.
@@ -54,12 +63,14 @@ outcomes:
 - aborted
 {% endblock meta %}
 {% from "Utils.tpl.py" import import_module, render_init_callbacks, render_execute_callbacks %}
+{% from "ScriptImports.tpl.py" import render_script_imports %}
 {% extends "State.tpl.py" %}
 {% include "MsgPublisher.tpl.py" %}
 
 {% block imports %}
 {{ super() }}
 {{ import_module(defined_headers, 'geometry_msgs.msg') }}
+{{ render_script_imports(defined_headers, import_modules if import_modules is defined else [], from_imports if from_imports is defined else {}) }}
 {% endblock imports %}
 
 {% block class_defs %}

@@ -27,11 +27,22 @@ variables:
 - - function_name:
       description: The name of the generated main function (default main).
       type: str
+- - import_modules:
+      description: >
+        Modules that the script's code uses, each written `import <module>`
+        (e.g. [std_msgs.msg] for msg_type std_msgs.msg.String).
+      type: list of str
+- - from_imports:
+      description: >
+        Names that the script's code uses, by module, each written `from
+        <module> import <name>` (e.g. {std_srvs.srv: [Trigger]}).
+      type: dict of list of str
 input_keys: []
 output_keys: []
 outcomes: []
 {% endblock meta %}
 {% from "Utils.tpl.py" import import_module %}
+{% from "ScriptImports.tpl.py" import render_script_imports %}
 {% extends "Base.tpl.py" %}
 {%- block imports %}
 
@@ -39,6 +50,10 @@ outcomes: []
 {{ import_module(defined_headers, 'rospy') }}
 {{ import_module(defined_headers, 'smach') }}
 {{ import_module(defined_headers, 'smach_ros') }}
+{%- set script_imports = render_script_imports(defined_headers, import_modules if import_modules is defined else [], from_imports if from_imports is defined else {}) %}
+{%- if script_imports %}
+{{ script_imports }}
+{%- endif %}
 {%- if imports %}
 {{ imports }}
 {%- endif %}

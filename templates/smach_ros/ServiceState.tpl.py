@@ -26,13 +26,13 @@ variables:
       description: Request fields filled from the userdata keys of the same names.
       type: list of str
   - request_cb:
-      description: A function that builds the request from the userdata.
+      description: A function (a name or a backtick-wrapped lambda) that builds the request from the userdata.
       type: [function, str]
 - - response_slots:
       description: Response fields stored in the userdata keys of the same names.
       type: list of str
   - response_cb:
-      description: A function that handles the response.
+      description: A function (a name or a backtick-wrapped lambda) called with the userdata and the response.
       type: [function, str]
 - - input_keys:
       description: The userdata keys the request callback reads.
@@ -40,6 +40,15 @@ variables:
 - - output_keys:
       description: The userdata keys the response callback writes.
       type: list of str
+- - import_modules:
+      description: Modules that this state's code uses, each written `import <module>`.
+      type: list of str
+- - from_imports:
+      description: >
+        Names that this state's code uses (service, action or message types,
+        goal classes, callbacks), by module, each written `from <module> import
+        <name>` (e.g. {std_srvs.srv: [Trigger]}).
+      type: dict of list of str
 input_keys: []
 output_keys: []
 outcomes:
@@ -48,7 +57,13 @@ outcomes:
 - preempted
 {% endblock meta %}
 {% from "Utils.tpl.py" import render_request_slots, render_response_slots %}
+{% from "ScriptImports.tpl.py" import render_script_imports %}
 {% extends "State.tpl.py" %}
+
+{% block imports %}
+{{ super() }}
+{{ render_script_imports(defined_headers, import_modules if import_modules is defined else [], from_imports if from_imports is defined else {}) }}
+{% endblock imports %}
 
 {% block body %}
 smach.{{ parent_type }}.add({{ name | pyrepr }},
@@ -58,7 +73,7 @@ smach.{{ parent_type }}.add({{ name | pyrepr }},
 {%- elif request_slots is defined %},
 {{ render_request_slots(request_slots) }}
 {%- elif request_cb is defined %},
-{{ ' ' * 51 }}request_cb = {{ request_cb }}
+{{ ' ' * 51 }}request_cb = {{ request_cb | exptostr if request_cb is expression else request_cb }}
 {%- if input_keys is defined %},
 {{ render_input_keys(input_keys) }}
 {%- endif %}
@@ -66,7 +81,7 @@ smach.{{ parent_type }}.add({{ name | pyrepr }},
 {%- if response_slots is defined %},
 {{ render_response_slots(response_slots) }}
 {%- elif response_cb is defined %},
-{{ ' ' * 51 }}response_cb = {{ response_cb }}
+{{ ' ' * 51 }}response_cb = {{ response_cb | exptostr if response_cb is expression else response_cb }}
 {%- if output_keys is defined %},
 {{ render_output_keys(output_keys) }}
 {%- endif %}

@@ -32,6 +32,15 @@ variables:
 - - output_keys:
       description: The userdata keys the message callback writes.
       type: list of str
+- - import_modules:
+      description: Modules that this state's code uses, each written `import <module>`.
+      type: list of str
+- - from_imports:
+      description: >
+        Names that this state's code uses (service, action or message types,
+        goal classes, callbacks), by module, each written `from <module> import
+        <name>` (e.g. {std_srvs.srv: [Trigger]}).
+      type: dict of list of str
 input_keys: []
 output_keys: []
 outcomes:
@@ -40,12 +49,14 @@ outcomes:
 - preempted
 {% endblock meta %}
 {% from "Utils.tpl.py" import import_module, render_value %}
+{% from "ScriptImports.tpl.py" import render_script_imports %}
 {% extends "State.tpl.py" %}
 
 {% block imports %}
 {{ super() }}
 {{ import_module(defined_headers, 'rospy') }}
 {{ import_module(defined_headers, 'threading') }}
+{{ render_script_imports(defined_headers, import_modules if import_modules is defined else [], from_imports if from_imports is defined else {}) }}
 {% endblock imports %}
 
 {% block class_defs %}
@@ -75,11 +86,11 @@ class WaitForMsgState(smach.State):
             self._msg = msg
 
     def waitForMsg(self):
-        """The next message, None on timeout, or 'preempted'."""
+        """The next message; None on timeout or when ROS shuts down; 'preempted'."""
         deadline = None
         if self._timeout is not None:
             deadline = rospy.Time.now() + rospy.Duration.from_sec(self._timeout)
-        while deadline is None or rospy.Time.now() < deadline:
+        while not rospy.is_shutdown() and (deadline is None or rospy.Time.now() < deadline):
             with self._lock:
                 msg = self._msg
                 if msg is not None and not self._latch:
@@ -89,7 +100,10 @@ class WaitForMsgState(smach.State):
             if self.preempt_requested():
                 self.service_preempt()
                 return 'preempted'
-            rospy.sleep(0.1)
+            try:
+                rospy.sleep(0.05)
+            except rospy.ROSInterruptException:
+                break
         return None
 
     def execute(self, userdata):

@@ -6,7 +6,7 @@ made here independently, with `wc -l` and smachac run directly.
 
 For every target (smach, cpp, flexbe) the output must be the table in the paper's format
 (header, the three experiments in order, each cell `ours (paper)`) with the paper's figures
-from ../shared/baxter/EXPERIMENTS.md, and every one of our cells must equal the recount:
+as the paper reports them, and every one of our cells must equal the recount:
 Pick & Place counts every template file of sim/templates/<target> except
 FollowJointTrajActionState (no experiment uses it) and both sub-scripts; Stacking and
 Dual-Arm count no template and no sub-script (they add none: Concurrence is a core

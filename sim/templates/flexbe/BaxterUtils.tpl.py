@@ -17,7 +17,7 @@ input_keys: []
 output_keys: []
 outcomes: []
 {% endblock meta %}
-{% from "Utils.tpl.py" import render_list, layout, class_ref, render_transitions, render_autonomy, render_remapping %}
+{% from "Utils.tpl.py" import render_list, layout, class_ref, render_transitions, render_autonomy, remapping_argument %}
 
 {# What every Baxter EventState needs, written once into the states module (ROS 1: the
    Baxter SDK is ROS 1 only). BaxterEventState runs start() on the first execute() and
@@ -159,5 +159,5 @@ def baxter_joint_positions(limb_interface, positions):
 {% macro render_baxter_add(defined_headers, module, cls, name, arguments, input_keys, output_keys, transitions, autonomy, remapping) -%}
 {% set all_arguments = arguments + ['input_keys=' ~ render_list(input_keys)] -%}
 {{ layout(defined_headers) }}
-OperatableStateMachine.add({{ name | pyrepr }}, {{ class_ref(defined_headers, module, cls) }}({{ all_arguments | join(', ') }}), {{ render_transitions(transitions if transitions is defined else {}) }}, {{ render_autonomy(transitions if transitions is defined else {}, autonomy) }}, {{ render_remapping(input_keys, output_keys, remapping) }})
+OperatableStateMachine.add({{ name | pyrepr }}, {{ class_ref(defined_headers, module, cls) }}({{ all_arguments | join(', ') }}), {{ render_transitions(transitions if transitions is defined else {}) }}, {{ render_autonomy(transitions if transitions is defined else {}, autonomy) }}{{ remapping_argument(input_keys, output_keys, remapping) }})
 {%- endmacro %}

@@ -241,16 +241,22 @@ bool Concurrence::possible(const Entry& entry) const {
   return true;
 }
 
+// The outcome_map rule of the runtime README ("Choosing among outcome_map entries"): more
+// conditions win, then the earlier entry in map order.
 bool Concurrence::outranks(int a, int b) const {
   std::size_t need_a = entries_[static_cast<std::size_t>(a)].need.size();
   std::size_t need_b = entries_[static_cast<std::size_t>(b)].need.size();
-  return need_a != need_b ? need_a > need_b : a > b;
+  return need_a != need_b ? need_a > need_b : a < b;
+}
+
+bool Concurrence::choosable(const Entry& entry) const {
+  return !entry.need.empty() && satisfied(entry);
 }
 
 std::optional<int> Concurrence::decideLocked(bool final) const {
   std::optional<int> best;
   for (int k = 0; k < static_cast<int>(entries_.size()); ++k) {
-    if (satisfied(entries_[static_cast<std::size_t>(k)]) && (!best || outranks(k, *best))) best = k;
+    if (choosable(entries_[static_cast<std::size_t>(k)]) && (!best || outranks(k, *best))) best = k;
   }
   if (!best || final) return best;
   for (int k = 0; k < static_cast<int>(entries_.size()); ++k) {

@@ -136,16 +136,21 @@ ConditionalOutcomeState::ConditionalOutcomeState(StateSpec spec, Callbacks callb
   for (const auto& entry : callbacks_) addOutputKey(entry.first);
 }
 
+// As the template's class: a condition whose key is not set (no callback wrote it, nothing
+// else set it) is skipped, and the choice, `default` included, is written to `outcome`.
 std::string ConditionalOutcomeState::execute(UserData& userdata) {
   runCallbacks(callbacks_, userdata);
+  std::string chosen = kDefault;
   for (const std::string& outcome : outcomes()) {
     if (outcome == kDefault) break;
-    if (userdata.at(outcome).truthy()) {
-      userdata.set(kOutcomeKey, outcome);
-      return outcome;
+    std::optional<Value> condition = userdata.find(outcome);
+    if (condition && condition->truthy()) {
+      chosen = outcome;
+      break;
     }
   }
-  return kDefault;
+  userdata.set(kOutcomeKey, chosen);
+  return chosen;
 }
 
 // --- SleepState ------------------------------------------------------------------------------

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <thread>
 
+#include "smachac/runtime/container.h"
 #include "smachac/runtime/core_states.h"
 #include "smachac/runtime/run.h"
 #include "smachac/runtime/trace.h"
@@ -26,6 +27,7 @@ struct Options {
   std::string trace_file;  ///< JSON lines written here when set
   std::optional<uint64_t> seed;
   bool quiet = false;
+  bool print_userdata = false;
 };
 
 /// Parses the flags; returns an error message on a bad one.
@@ -44,6 +46,8 @@ std::optional<std::string> parseFlags(int argc, char** argv, Options& options) {
       if (digits.empty() || *end != '\0') return "bad seed `" + digits + "`";
     } else if (arg == "--quiet") {
       options.quiet = true;
+    } else if (arg == "--print-userdata") {
+      options.print_userdata = true;
     } else {
       return "unknown flag `" + std::string(arg) + "`";
     }
@@ -119,6 +123,12 @@ bool attachSinks(State& root, const Options& options) {
   return true;
 }
 
+/// The top container's userdata in Python's spelling (a dict), `{}` for a leaf.
+std::string finalUserdata(const State& root) {
+  const auto* container = dynamic_cast<const Container*>(&root);
+  return Value(container != nullptr ? container->userdata().snapshot() : Map{}).repr();
+}
+
 }  // namespace
 
 int runMain(State& root, int argc, char** argv) {
@@ -126,7 +136,8 @@ int runMain(State& root, int argc, char** argv) {
   if (std::optional<std::string> error = parseFlags(argc, argv, options)) {
     std::cerr << "error: " << *error << "\n"
               << "usage: " << (argc > 0 ? argv[0] : "machine")
-              << " [--trace=json|log] [--trace-file=PATH] [--seed=N] [--quiet]\n";
+              << " [--trace=json|log] [--trace-file=PATH] [--seed=N] [--quiet]"
+                 " [--print-userdata]\n";
     return 2;
   }
   if (!attachSinks(root, options)) {
@@ -144,6 +155,7 @@ int runMain(State& root, int argc, char** argv) {
     return 1;
   }
   if (!options.quiet) std::cout << "outcome: " << result.outcome << "\n";
+  if (options.print_userdata) std::cout << "userdata: " << finalUserdata(root) << "\n";
   return 0;
 }
 

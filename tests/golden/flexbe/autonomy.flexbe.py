@@ -116,13 +116,13 @@ class AutonomySM(Behavior):
 
         with _state_machine:
             # x:30 y:40
-            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b', 'c', 'd']), transitions={'a': 'WAIT', 'b': 'LOG', 'c': 'finished', 'd': 'failed'}, autonomy={'a': Autonomy.Low, 'b': Autonomy.High, 'c': Autonomy.Full, 'd': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b', 'c', 'd']), transitions={'a': 'WAIT', 'b': 'LOG', 'c': 'finished', 'd': 'failed'}, autonomy={'a': Autonomy.Low, 'b': Autonomy.High, 'c': Autonomy.Full, 'd': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('WAIT', WaitState(wait_time=1), transitions={'done': 'LOG'}, autonomy={'done': Autonomy.High}, remapping={})
+            OperatableStateMachine.add('WAIT', WaitState(wait_time=1), transitions={'done': 'LOG'}, autonomy={'done': Autonomy.High})
 
             # x:430 y:40
-            OperatableStateMachine.add('LOG', LogState(text='bye', severity=Logger.REPORT_HINT), transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('LOG', LogState(text='bye', severity=Logger.REPORT_HINT), transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off})
 
         return _state_machine
 

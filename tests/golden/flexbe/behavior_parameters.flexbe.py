@@ -141,17 +141,17 @@ class BehaviorParametersSM(Behavior):
 
         with _sm_inner:
             # x:430 y:40
-            OperatableStateMachine.add('LOG_INNER', LogState(text='inner', severity=Logger.REPORT_HINT), transitions={'done': 'done'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('LOG_INNER', LogState(text='inner', severity=Logger.REPORT_HINT), transitions={'done': 'done'}, autonomy={'done': Autonomy.Off})
 
         with _state_machine:
             # x:30 y:40
-            OperatableStateMachine.add('WAIT', WaitState(wait_time=self.wait_time), transitions={'done': 'LOG'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT', WaitState(wait_time=self.wait_time), transitions={'done': 'LOG'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('LOG', LogState(text=self.message, severity=Logger.REPORT_HINT), transitions={'done': 'INNER'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('LOG', LogState(text=self.message, severity=Logger.REPORT_HINT), transitions={'done': 'INNER'}, autonomy={'done': Autonomy.Off})
 
             # x:630 y:40
-            OperatableStateMachine.add('INNER', _sm_inner, transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('INNER', _sm_inner, transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off})
 
         return _state_machine
 

@@ -118,17 +118,17 @@ class ConcurrenceSM(Behavior):
 
         with _sm_con:
             # x:30 y:40
-            OperatableStateMachine.add('WAIT_A', WaitState(wait_time=1), transitions={'done': 'both_done'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT_A', WaitState(wait_time=1), transitions={'done': 'both_done'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('WAIT_B', WaitState(wait_time=2), transitions={'done': 'both_done'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT_B', WaitState(wait_time=2), transitions={'done': 'both_done'}, autonomy={'done': Autonomy.Off})
 
             # x:430 y:40
-            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b']), transitions={'a': 'both_done', 'b': 'one_failed'}, autonomy={'a': Autonomy.Off, 'b': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b']), transitions={'a': 'both_done', 'b': 'one_failed'}, autonomy={'a': Autonomy.Off, 'b': Autonomy.Off})
 
         with _state_machine:
             # x:630 y:40
-            OperatableStateMachine.add('CON', _sm_con, transitions={'both_done': 'finished', 'one_failed': 'failed'}, autonomy={'both_done': Autonomy.Off, 'one_failed': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('CON', _sm_con, transitions={'both_done': 'finished', 'one_failed': 'failed'}, autonomy={'both_done': Autonomy.Off, 'one_failed': Autonomy.Off})
 
         return _state_machine
 

@@ -117,17 +117,17 @@ class LostSM(Behavior):
 
         with _sm_con:
             # x:30 y:40
-            OperatableStateMachine.add('A', RandomOutcomeState(outcomes=['a1', 'a2', 'a3', 'a4', 'a5']), transitions={'a1': 'all_done', 'a2': 'broken', 'a3': 'broken', 'a4': 'broken', 'a5': 'broken'}, autonomy={'a1': Autonomy.Off, 'a2': Autonomy.Off, 'a3': Autonomy.Off, 'a4': Autonomy.Off, 'a5': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('A', RandomOutcomeState(outcomes=['a1', 'a2', 'a3', 'a4', 'a5']), transitions={'a1': 'all_done', 'a2': 'broken', 'a3': 'broken', 'a4': 'broken', 'a5': 'broken'}, autonomy={'a1': Autonomy.Off, 'a2': Autonomy.Off, 'a3': Autonomy.Off, 'a4': Autonomy.Off, 'a5': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('B', RandomOutcomeState(outcomes=['b1', 'b2', 'b3', 'b4', 'b5']), transitions={'b1': 'all_done', 'b2': 'broken', 'b3': 'broken', 'b4': 'broken', 'b5': 'broken'}, autonomy={'b1': Autonomy.Off, 'b2': Autonomy.Off, 'b3': Autonomy.Off, 'b4': Autonomy.Off, 'b5': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('B', RandomOutcomeState(outcomes=['b1', 'b2', 'b3', 'b4', 'b5']), transitions={'b1': 'all_done', 'b2': 'broken', 'b3': 'broken', 'b4': 'broken', 'b5': 'broken'}, autonomy={'b1': Autonomy.Off, 'b2': Autonomy.Off, 'b3': Autonomy.Off, 'b4': Autonomy.Off, 'b5': Autonomy.Off})
 
             # x:430 y:40
-            OperatableStateMachine.add('C', RandomOutcomeState(outcomes=['c1', 'c2', 'c3', 'c4', 'c5']), transitions={'c1': 'all_done', 'c2': 'broken', 'c3': 'broken', 'c4': 'broken', 'c5': 'broken'}, autonomy={'c1': Autonomy.Off, 'c2': Autonomy.Off, 'c3': Autonomy.Off, 'c4': Autonomy.Off, 'c5': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('C', RandomOutcomeState(outcomes=['c1', 'c2', 'c3', 'c4', 'c5']), transitions={'c1': 'all_done', 'c2': 'broken', 'c3': 'broken', 'c4': 'broken', 'c5': 'broken'}, autonomy={'c1': Autonomy.Off, 'c2': Autonomy.Off, 'c3': Autonomy.Off, 'c4': Autonomy.Off, 'c5': Autonomy.Off})
 
         with _state_machine:
             # x:630 y:40
-            OperatableStateMachine.add('CON', _sm_con, transitions={'all_done': 'finished', 'broken': 'failed'}, autonomy={'all_done': Autonomy.Off, 'broken': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('CON', _sm_con, transitions={'all_done': 'finished', 'broken': 'failed'}, autonomy={'all_done': Autonomy.Off, 'broken': Autonomy.Off})
 
         return _state_machine
 

@@ -118,7 +118,7 @@ class DerivedSM(Behavior):
 
         with _sm_branch:
             # x:630 y:40
-            OperatableStateMachine.add('STEP', RandomOutcomeState(outcomes=['done', 'bad', 'preempted']), transitions={'bad': 'failed', 'done': 'finished', 'preempted': 'preempted'}, autonomy={'bad': Autonomy.Off, 'done': Autonomy.Off, 'preempted': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('STEP', RandomOutcomeState(outcomes=['done', 'bad', 'preempted']), transitions={'bad': 'failed', 'done': 'finished', 'preempted': 'preempted'}, autonomy={'bad': Autonomy.Off, 'done': Autonomy.Off, 'preempted': Autonomy.Off})
 
 
 
@@ -127,20 +127,20 @@ class DerivedSM(Behavior):
 
         with _sm_con:
             # x:30 y:40
-            OperatableStateMachine.add('WAIT', WaitState(wait_time=1), transitions={'done': 'all_done'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT', WaitState(wait_time=1), transitions={'done': 'all_done'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b']), transitions={'a': 'all_done', 'b': 'broken'}, autonomy={'a': Autonomy.Off, 'b': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b']), transitions={'a': 'all_done', 'b': 'broken'}, autonomy={'a': Autonomy.Off, 'b': Autonomy.Off})
 
             # x:430 y:40
-            OperatableStateMachine.add('WAIT_MORE', WaitState(wait_time=2), transitions={'done': 'broken'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT_MORE', WaitState(wait_time=2), transitions={'done': 'broken'}, autonomy={'done': Autonomy.Off})
 
             # x:30 y:160
-            OperatableStateMachine.add('BRANCH', _sm_branch, transitions={'failed': 'broken', 'finished': 'all_done', 'preempted': 'broken'}, autonomy={'failed': Autonomy.Off, 'finished': Autonomy.Off, 'preempted': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('BRANCH', _sm_branch, transitions={'failed': 'broken', 'finished': 'all_done', 'preempted': 'broken'}, autonomy={'failed': Autonomy.Off, 'finished': Autonomy.Off, 'preempted': Autonomy.Off})
 
         with _state_machine:
             # x:230 y:160
-            OperatableStateMachine.add('CON', _sm_con, transitions={'all_done': 'finished', 'broken': 'failed'}, autonomy={'all_done': Autonomy.Off, 'broken': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('CON', _sm_con, transitions={'all_done': 'finished', 'broken': 'failed'}, autonomy={'all_done': Autonomy.Off, 'broken': Autonomy.Off})
 
         return _state_machine
 

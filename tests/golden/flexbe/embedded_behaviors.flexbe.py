@@ -152,16 +152,16 @@ class EmbeddedSM(Behavior):
 
         with _sm_pick_d:
             # x:30 y:160
-            OperatableStateMachine.add('APPROACH', LogState(text='fourth', severity=Logger.REPORT_HINT), transitions={'done': 'WAIT'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('APPROACH', LogState(text='fourth', severity=Logger.REPORT_HINT), transitions={'done': 'WAIT'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:160
-            OperatableStateMachine.add('WAIT', WaitState(wait_time=1.5), transitions={'done': 'CHECK'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT', WaitState(wait_time=1.5), transitions={'done': 'CHECK'}, autonomy={'done': Autonomy.Off})
 
             # x:430 y:160
             OperatableStateMachine.add('CHECK', PrintUserdataState(keys=['target', 'attempts']), transitions={'succeeded': 'GRIP'}, autonomy={'succeeded': Autonomy.Off}, remapping={'target': 'target', 'attempts': 'attempts'})
 
             # x:630 y:160
-            OperatableStateMachine.add('GRIP', self.use_behavior(GripSM, 'PICK_D/GRIP', parameters={'force': 1.5}), transitions={'closed': 'picked', 'open': 'missed'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('GRIP', self.use_behavior(GripSM, 'PICK_D/GRIP', parameters={'force': 1.5}), transitions={'closed': 'picked', 'open': 'missed'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off})
 
         with _state_machine:
             # x:30 y:40
@@ -334,10 +334,10 @@ class GripSM(Behavior):
 
         with _state_machine:
             # x:30 y:40
-            OperatableStateMachine.add('CLOSE', WaitState(wait_time=self.force), transitions={'done': 'TRY'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('CLOSE', WaitState(wait_time=self.force), transitions={'done': 'TRY'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('TRY', RandomOutcomeState(outcomes=['closed', 'open']), transitions={'closed': 'closed', 'open': 'open'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('TRY', RandomOutcomeState(outcomes=['closed', 'open']), transitions={'closed': 'closed', 'open': 'open'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off})
 
         return _state_machine
 
@@ -531,16 +531,16 @@ class Pick2SM(Behavior):
 
         with _state_machine:
             # x:30 y:40
-            OperatableStateMachine.add('APPROACH', LogState(text=self.label, severity=Logger.REPORT_HINT), transitions={'done': 'WAIT'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('APPROACH', LogState(text=self.label, severity=Logger.REPORT_HINT), transitions={'done': 'WAIT'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('WAIT', WaitState(wait_time=self.speed), transitions={'done': 'CHECK'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT', WaitState(wait_time=self.speed), transitions={'done': 'CHECK'}, autonomy={'done': Autonomy.Off})
 
             # x:430 y:40
             OperatableStateMachine.add('CHECK', PrintUserdataState(keys=['target', 'attempts']), transitions={'succeeded': 'GRIP'}, autonomy={'succeeded': Autonomy.Off}, remapping={'target': 'target', 'attempts': 'attempts'})
 
             # x:630 y:40
-            OperatableStateMachine.add('GRIP', self.use_behavior(GripSM, 'GRIP', parameters={'force': self.speed}), transitions={'closed': 'picked', 'open': 'missed'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('GRIP', self.use_behavior(GripSM, 'GRIP', parameters={'force': self.speed}), transitions={'closed': 'picked', 'open': 'missed'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off})
 
         return _state_machine
 
@@ -682,16 +682,16 @@ class PickSM(Behavior):
 
         with _state_machine:
             # x:30 y:40
-            OperatableStateMachine.add('APPROACH', LogState(text=self.label, severity=Logger.REPORT_HINT), transitions={'done': 'WAIT'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('APPROACH', LogState(text=self.label, severity=Logger.REPORT_HINT), transitions={'done': 'WAIT'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('WAIT', WaitState(wait_time=self.speed), transitions={'done': 'CHECK'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT', WaitState(wait_time=self.speed), transitions={'done': 'CHECK'}, autonomy={'done': Autonomy.Off})
 
             # x:430 y:40
             OperatableStateMachine.add('CHECK', PrintUserdataState(keys=['target', 'attempts']), transitions={'succeeded': 'GRIP'}, autonomy={'succeeded': Autonomy.Off}, remapping={'target': 'target', 'attempts': 'attempts'})
 
             # x:630 y:40
-            OperatableStateMachine.add('GRIP', self.use_behavior(GripSM, 'GRIP', parameters={'force': self.speed}), transitions={'closed': 'picked', 'open': 'missed'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('GRIP', self.use_behavior(GripSM, 'GRIP', parameters={'force': self.speed}), transitions={'closed': 'picked', 'open': 'missed'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off})
 
         return _state_machine
 

@@ -115,13 +115,13 @@ class ImportClashSM(Behavior):
 
         with _state_machine:
             # x:30 y:40
-            OperatableStateMachine.add('WAIT_1', WaitState(wait_time=1), transitions={'done': 'OTHER'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT_1', WaitState(wait_time=1), transitions={'done': 'OTHER'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('OTHER', my_flexbe_states__WaitState(), transitions={'done': 'WAIT_2'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('OTHER', my_flexbe_states__WaitState(), transitions={'done': 'WAIT_2'}, autonomy={'done': Autonomy.Off})
 
             # x:430 y:40
-            OperatableStateMachine.add('WAIT_2', WaitState(wait_time=2), transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT_2', WaitState(wait_time=2), transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off})
 
         return _state_machine
 

@@ -121,7 +121,7 @@ class NestingSM(Behavior):
 
         with _sm_inner:
             # x:30 y:40
-            OperatableStateMachine.add('WAIT', WaitState(wait_time=0.5), transitions={'done': 'done'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT', WaitState(wait_time=0.5), transitions={'done': 'done'}, autonomy={'done': Autonomy.Off})
 
 
 
@@ -130,17 +130,17 @@ class NestingSM(Behavior):
 
         with _sm_outer:
             # x:230 y:40
-            OperatableStateMachine.add('INNER', _sm_inner, transitions={'done': 'RANDOM'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('INNER', _sm_inner, transitions={'done': 'RANDOM'}, autonomy={'done': Autonomy.Off})
 
             # x:430 y:40
-            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b']), transitions={'a': 'done', 'b': 'aborted'}, autonomy={'a': Autonomy.Off, 'b': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b']), transitions={'a': 'done', 'b': 'aborted'}, autonomy={'a': Autonomy.Off, 'b': Autonomy.Off})
 
         with _state_machine:
             # x:630 y:40
-            OperatableStateMachine.add('OUTER', _sm_outer, transitions={'aborted': 'failed', 'done': 'LOG'}, autonomy={'aborted': Autonomy.Off, 'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('OUTER', _sm_outer, transitions={'aborted': 'failed', 'done': 'LOG'}, autonomy={'aborted': Autonomy.Off, 'done': Autonomy.Off})
 
             # x:30 y:160
-            OperatableStateMachine.add('LOG', LogState(text='all done', severity=Logger.REPORT_INFO), transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('LOG', LogState(text='all done', severity=Logger.REPORT_INFO), transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off})
 
         return _state_machine
 

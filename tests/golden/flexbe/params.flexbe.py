@@ -78,14 +78,14 @@ class ParamsSM(Behavior):
 
         with _sm_seq:
             # x:30 y:40
-            OperatableStateMachine.add('WAIT', WaitState(wait_time=2.5), transitions={'done': 'LOG'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT', WaitState(wait_time=2.5), transitions={'done': 'LOG'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('LOG', LogState(text='hello', severity=Logger.REPORT_HINT), transitions={'done': 'done'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('LOG', LogState(text='hello', severity=Logger.REPORT_HINT), transitions={'done': 'done'}, autonomy={'done': Autonomy.Off})
 
         with _state_machine:
             # x:430 y:40
-            OperatableStateMachine.add('SEQ', _sm_seq, transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('SEQ', _sm_seq, transitions={'done': 'finished'}, autonomy={'done': Autonomy.Off})
 
         return _state_machine
 

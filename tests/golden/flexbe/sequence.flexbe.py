@@ -115,10 +115,10 @@ class SimpleSequenceSM(Behavior):
 
         with _state_machine:
             # x:30 y:40
-            OperatableStateMachine.add('WAIT', WaitState(wait_time=1.5), transitions={'done': 'RANDOM'}, autonomy={'done': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('WAIT', WaitState(wait_time=1.5), transitions={'done': 'RANDOM'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['outcome_a', 'outcome_b']), transitions={'outcome_a': 'finished', 'outcome_b': 'failed'}, autonomy={'outcome_a': Autonomy.Off, 'outcome_b': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['outcome_a', 'outcome_b']), transitions={'outcome_a': 'finished', 'outcome_b': 'failed'}, autonomy={'outcome_a': Autonomy.Off, 'outcome_b': Autonomy.Off})
 
         return _state_machine
 

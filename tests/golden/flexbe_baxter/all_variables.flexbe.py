@@ -84,10 +84,10 @@ class AllVariablesSM(Behavior):
 
         with _sm_arms:
             # x:430 y:40
-            OperatableStateMachine.add('MOVE', MoveToJointPositionsState(limb='left', positions=[-0.08, -1.0, -1.19, 1.94, 0.67, 1.03, -0.5], speed=0.5, timeout=10.0, input_keys=[]), transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'succeeded'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('MOVE', MoveToJointPositionsState(limb='left', positions=[-0.08, -1.0, -1.19, 1.94, 0.67, 1.03, -0.5], speed=0.5, timeout=10.0, input_keys=[]), transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'succeeded'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off})
 
             # x:630 y:40
-            OperatableStateMachine.add('FOLLOW', FollowJointTrajActionState(limb='right', points=[[0.08, -1.0, 1.19, 1.94, -0.67, 1.03, 0.5], [0.0, -0.5, 1.0, 1.5, 0.0, 1.0, 0.0]], speed=0.2, timeout=20.0, input_keys=[]), transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'succeeded'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('FOLLOW', FollowJointTrajActionState(limb='right', points=[[0.08, -1.0, 1.19, 1.94, -0.67, 1.03, 0.5], [0.0, -0.5, 1.0, 1.5, 0.0, 1.0, 0.0]], speed=0.2, timeout=20.0, input_keys=[]), transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'succeeded'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off})
 
         with _state_machine:
             # x:30 y:40
@@ -97,10 +97,10 @@ class AllVariablesSM(Behavior):
             OperatableStateMachine.add('IK', PoseToJointTrajServiceState(limb='right', poses=[[0.7, -0.15, -0.129], [0.0, 1.0, 0.0, 0.0]], offsets=[0.0, 0.0, 0.15], input_keys=[]), transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'ARMS'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off}, remapping={'joints': 'joints'})
 
             # x:30 y:160
-            OperatableStateMachine.add('ARMS', _sm_arms, transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'GRIP'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('ARMS', _sm_arms, transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'GRIP'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off})
 
             # x:230 y:160
-            OperatableStateMachine.add('GRIP', GripperInterfaceState(limb='right', command='close', expect_grasp=False, timeout=3.0, input_keys=[]), transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'READ'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off}, remapping={})
+            OperatableStateMachine.add('GRIP', GripperInterfaceState(limb='right', command='close', expect_grasp=False, timeout=3.0, input_keys=[]), transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'READ'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off})
 
             # x:430 y:160
             OperatableStateMachine.add('READ', ReadEndpointPoseState(limb='right', input_keys=[]), transitions={'aborted': 'aborted', 'preempted': 'preempted', 'succeeded': 'succeeded'}, autonomy={'aborted': Autonomy.Off, 'preempted': Autonomy.Off, 'succeeded': Autonomy.Off}, remapping={'pose': 'right_endpoint_pose'})

@@ -16,7 +16,7 @@ class Foo(smach.State):
         self._name = name
         
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 
@@ -51,7 +51,7 @@ class CallbacksState(smach.State):
                              outcomes=outcomes)
         
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 

@@ -18,7 +18,7 @@ class ConditionalOutcomeState(smach.State):
                              outcomes=self._conditions + ['default'])
         
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 

@@ -17,7 +17,7 @@ class WriteCSVFileState(smach.State):
         self._delimiter = delimiter
         
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 
@@ -65,7 +65,7 @@ class DeleteFileState(smach.State):
                              outcomes=['succeeded', 'aborted'])
         
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 

@@ -15,7 +15,7 @@ class RandomOutcomeState(smach.State):
         self._choices = sorted(outcomes)
         
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 
@@ -52,7 +52,7 @@ class CallbacksState(smach.State):
                              outcomes=outcomes)
         
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 

@@ -80,11 +80,11 @@ class WaitForMsgState(smach.State):
             self._msg = msg
 
     def waitForMsg(self):
-        """The next message, None on timeout, or 'preempted'."""
+        """The next message; None on timeout or when ROS shuts down; 'preempted'."""
         deadline = None
         if self._timeout is not None:
             deadline = rospy.Time.now() + rospy.Duration.from_sec(self._timeout)
-        while deadline is None or rospy.Time.now() < deadline:
+        while not rospy.is_shutdown() and (deadline is None or rospy.Time.now() < deadline):
             with self._lock:
                 msg = self._msg
                 if msg is not None and not self._latch:
@@ -94,7 +94,10 @@ class WaitForMsgState(smach.State):
             if self.preempt_requested():
                 self.service_preempt()
                 return 'preempted'
-            rospy.sleep(0.1)
+            try:
+                rospy.sleep(0.05)
+            except rospy.ROSInterruptException:
+                break
         return None
 
     def execute(self, userdata):

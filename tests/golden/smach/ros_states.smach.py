@@ -4,6 +4,11 @@ import roslib
 import rospy
 import smach
 import smach_ros
+import std_msgs.msg
+from smachac_test_msgs.msg import MoveAction
+from smachac_test_msgs.msg import MoveGoal
+from smachac_test_msgs.srv import SetWidth
+
 from actionlib import *
 
 import tf2_ros
@@ -142,7 +147,7 @@ class PublishMsgState(smach.State):
         self._action = action
         
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 
@@ -224,11 +229,11 @@ class WaitForMsgState(smach.State):
             self._msg = msg
 
     def waitForMsg(self):
-        """The next message, None on timeout, or 'preempted'."""
+        """The next message; None on timeout or when ROS shuts down; 'preempted'."""
         deadline = None
         if self._timeout is not None:
             deadline = rospy.Time.now() + rospy.Duration.from_sec(self._timeout)
-        while deadline is None or rospy.Time.now() < deadline:
+        while not rospy.is_shutdown() and (deadline is None or rospy.Time.now() < deadline):
             with self._lock:
                 msg = self._msg
                 if msg is not None and not self._latch:
@@ -238,7 +243,10 @@ class WaitForMsgState(smach.State):
             if self.preempt_requested():
                 self.service_preempt()
                 return 'preempted'
-            rospy.sleep(0.1)
+            try:
+                rospy.sleep(0.05)
+            except rospy.ROSInterruptException:
+                break
         return None
 
     def execute(self, userdata):
@@ -257,15 +265,19 @@ class WaitForMsgState(smach.State):
 
 
 class ReadTopicState(smach.State):
-    """Reads one message from the topic named by the `topic` input key."""
+    """Reads one message from the topic named by the `topic` input key; aborts after
+    `timeout` seconds (None: no limit), when preempted or when ROS shuts down."""
 
     def __init__(self, input_keys=['topic'], output_keys=['output'], callbacks=[],
-                 outcomes=['succeeded', 'aborted']):
+                 outcomes=['succeeded', 'aborted'], timeout=None):
         smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
                              outcomes=['succeeded', 'aborted'])
+        self._timeout = timeout
+        self._reader = None
+        self._reader_lock = threading.Lock()
         
         self._cbs = []
-        for cb_name in sorted(callbacks or []):
+        for cb_name in (callbacks or []):
             if cb_name in globals():
                 self._cbs.append(globals()[cb_name])
 
@@ -282,11 +294,33 @@ class ReadTopicState(smach.State):
                 self.register_outcomes(self._cb_outcomes[-1])
 
 
-    def _message_class(self, userdata, topic):
+    def request_preempt(self):
+        smach.State.request_preempt(self)
+        with self._reader_lock:
+            if self._reader is not None:
+                self._reader.request_preempt()
+
+    def _wait(self, topic, msg_class, deadline):
+        """The first message of msg_class on topic, or None (time out, preempted, shutdown)."""
+        timeout = None
+        if deadline is not None:
+            timeout = max(0.0, (deadline - rospy.Time.now()).to_sec())
+        with WaitForMsgState(topic, msg_class, latch=True, timeout=timeout) as reader:
+            with self._reader_lock:
+                self._reader = reader
+            try:
+                msg = None if self.preempt_requested() else reader.waitForMsg()
+            finally:
+                with self._reader_lock:
+                    self._reader = None
+        return msg if msg is not None and not isinstance(msg, str) else None
+
+    def _message_class(self, userdata, topic, deadline):
         if 'msg_type' in self._input_keys:
             return roslib.message.get_message_class(userdata.msg_type)
-        with WaitForMsgState(topic, rospy.AnyMsg, latch=True) as probe:
-            any_msg = probe.waitForMsg()
+        any_msg = self._wait(topic, rospy.AnyMsg, deadline)
+        if any_msg is None:
+            return None
         return roslib.message.get_message_class(any_msg._connection_header['type'])
 
     def execute(self, userdata):
@@ -297,14 +331,18 @@ class ReadTopicState(smach.State):
                                                  self._cb_output_keys):
             cb(smach.Remapper(userdata, input_keys, output_keys, {}))
 
+        deadline = None
+        if self._timeout is not None:
+            deadline = rospy.Time.now() + rospy.Duration.from_sec(self._timeout)
         try:
             topic = userdata.topic
-            msg_class = self._message_class(userdata, topic)
-            with WaitForMsgState(topic, msg_class, latch=True) as reader:
-                msg = reader.waitForMsg()
+            msg_class = self._message_class(userdata, topic, deadline)
+            msg = self._wait(topic, msg_class, deadline) if msg_class is not None else None
         except Exception as e:
             rospy.logerr('Cannot read topic: {}'.format(e))
             return 'aborted'
+        if self.preempt_requested():
+            self.service_preempt()
         if msg is None:
             return 'aborted'
         for key in ['output', 'msg', 'output_msg', 'msg_output']:
@@ -333,7 +371,7 @@ def main():
         smach.StateMachine.add('SERVICE',
                                smach_ros.ServiceState('/gripper/set_width', SetWidth,
                                                            request_slots = ['width'],
-                                                           response_cb = log_response,
+                                                           response_cb = lambda ud, response: setattr(ud, "reply", response.width),
                                              output_keys = ['reply']),
                                transitions={'aborted':'failed',
                                             'preempted':'failed',

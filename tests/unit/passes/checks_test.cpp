@@ -81,13 +81,38 @@ std::string concurrence(const std::string& outcome_map) {
          "        - X: {template: T, outcomes: [ok, no]}\n        - Y: {template: T}\n";
 }
 
-TEST_CASE("check-concurrence: shadowing follows SMACH's last-wins order") {
-  // `a` (all of X, Y) comes first and `b` (X only) after it: `a` never wins.
+TEST_CASE("check-concurrence: a larger entry before its subset is chosen by SMACH 2.5") {
+  // Sorted, `a` (X and Y) comes before `b` (X only): SMACH 2.5 chooses `a`, older SMACH `b`.
+  // Neither is reported as never chosen.
   auto c = check(concurrence("        b: {X: ok}\n        a: {X: ok, Y: ok}\n"), checkConcurrence);
-  CHECK(c->located() == std::vector<std::string>{"11:9 shadowed-outcome-map-entry"});
-  // The more specific entry checked last is fine.
+  CHECK(c->located() == std::vector<std::string>{"11:9 version-dependent-outcome-map"});
+  // The larger entry last: every version chooses it.
   c = check(concurrence("        a: {X: ok}\n        b: {X: ok, Y: whatever}\n"), checkConcurrence);
   CHECK(c->kinds().empty());
+}
+
+TEST_CASE("check-concurrence: entries that cannot hold together are not compared") {
+  auto c =
+      check(concurrence("        a: {X: ok}\n        b: {X: no, Y: done}\n"), checkConcurrence);
+  CHECK(c->kinds().empty());
+  c = check(concurrence("        a: {X: ok, Y: done}\n        b: {X: no}\n"), checkConcurrence);
+  CHECK(c->kinds().empty());
+}
+
+TEST_CASE("check-concurrence: equally large entries that can hold together differ by version") {
+  auto c = check(concurrence("        b: {Y: done}\n        a: {X: ok}\n"), checkConcurrence);
+  CHECK(c->located() == std::vector<std::string>{"11:9 version-dependent-outcome-map"});
+}
+
+TEST_CASE("check-concurrence: entries SMACH 2.5 never chooses") {
+  // The same conditions: the later entry is never chosen; no second warning for the pair.
+  auto c = check(concurrence("        a: {X: ok}\n        b: {X: ok}\n"), checkConcurrence);
+  CHECK(c->located() == std::vector<std::string>{"11:9 shadowed-outcome-map-entry"});
+  // No conditions: never chosen, wherever it stands.
+  c = check(concurrence("        a: {}\n        b: {X: ok}\n"), checkConcurrence);
+  CHECK(c->located() == std::vector<std::string>{"10:9 shadowed-outcome-map-entry"});
+  c = check(concurrence("        b: {}\n        a: {X: ok}\n"), checkConcurrence);
+  CHECK(c->located() == std::vector<std::string>{"10:9 shadowed-outcome-map-entry"});
 }
 
 TEST_CASE("check-reachability: no cascade from a container that never finishes") {

@@ -27,6 +27,15 @@ ConcurrenceSpec spec(rt::OutcomeMap map) {
           .outcome_map = std::move(map)};
 }
 
+/// A state that returns `done` after 50 ms, or at once when preempted; `finished` tells which.
+std::unique_ptr<LambdaState> slowDone(std::atomic<bool>& finished) {
+  return std::make_unique<LambdaState>(StateSpec{.outcomes = {"done"}},
+                                       [&finished](State& self, UserData&) -> std::string {
+                                         finished = !self.waitForPreempt(50ms);
+                                         return "done";
+                                       });
+}
+
 }  // namespace
 
 TEST_CASE("all children run and the outcome map picks the container outcome") {
@@ -43,18 +52,42 @@ TEST_CASE("the default outcome applies when no entry is satisfied") {
   CHECK(rt::run(con).outcome == "aborted");
 }
 
-TEST_CASE("entries naming more children win; ties go to the later entry") {
-  Concurrence subset(
+// The outcome_map rule (stdlib/runtime/README.md, "Choosing among outcome_map entries"). Map
+// order is the order of the outcome names: `mixed` comes before `succeeded`.
+TEST_CASE("of two satisfied entries the one with more conditions wins, in either order") {
+  Concurrence larger_first(
       spec({{"mixed", {{"A", "done"}, {"B", "done"}}}, {"succeeded", {{"A", "done"}}}}));
-  subset.add("A", returns("done"));
-  subset.add("B", returns("done"));
-  CHECK(rt::run(subset).outcome == "mixed");
+  larger_first.add("A", returns("done"));
+  larger_first.add("B", returns("done"));
+  CHECK(rt::run(larger_first).outcome == "mixed");
 
+  Concurrence larger_last(
+      spec({{"mixed", {{"A", "done"}}}, {"succeeded", {{"A", "done"}, {"B", "done"}}}}));
+  larger_last.add("A", returns("done"));
+  larger_last.add("B", returns("done"));
+  CHECK(rt::run(larger_last).outcome == "succeeded");
+}
+
+TEST_CASE("of satisfied entries with equally many conditions the first in map order wins") {
   Concurrence tie(spec({{"mixed", {{"A", "done"}}}, {"succeeded", {{"B", "done"}}}}));
   tie.add("A", returns("done"));
   tie.add("B", returns("done"));
   tie.add("C", returns("done"));
-  CHECK(rt::run(tie).outcome == "succeeded");
+  CHECK(rt::run(tie).outcome == "mixed");
+}
+
+TEST_CASE("an entry without conditions is never chosen") {
+  Concurrence alone(spec({{"mixed", {}}}));
+  alone.add("A", returns("done"));
+  CHECK(rt::run(alone).outcome == "aborted");
+
+  Concurrence before_unsatisfied(spec({{"mixed", {}}, {"succeeded", {{"A", "done"}}}}));
+  before_unsatisfied.add("A", returns("failed"));
+  CHECK(rt::run(before_unsatisfied).outcome == "aborted");
+
+  Concurrence before_satisfied(spec({{"mixed", {}}, {"succeeded", {{"A", "done"}}}}));
+  before_satisfied.add("A", returns("done"));
+  CHECK(rt::run(before_satisfied).outcome == "succeeded");
 }
 
 TEST_CASE("a decided entry preempts the children still running") {
@@ -68,17 +101,32 @@ TEST_CASE("a decided entry preempts the children still running") {
 }
 
 TEST_CASE("an entry that could still be beaten does not decide early") {
+  // FAST returns first, satisfying `mixed`; `succeeded` names more children and SLOW may still
+  // satisfy it, so the container waits for SLOW.
   std::atomic<bool> slow_finished{false};
-  Concurrence con(
-      spec({{"succeeded", {{"FAST", "done"}}}, {"mixed", {{"FAST", "done"}, {"SLOW", "done"}}}}));
+  Concurrence larger_later(
+      spec({{"mixed", {{"FAST", "done"}}}, {"succeeded", {{"FAST", "done"}, {"SLOW", "done"}}}}));
+  larger_later.add("FAST", returns("done"));
+  larger_later.add("SLOW", slowDone(slow_finished));
+  CHECK(rt::run(larger_later).outcome == "succeeded");
+  CHECK(slow_finished);
+
+  // FAST satisfies `succeeded`; `mixed` has as many conditions and comes first, so it still
+  // outranks `succeeded` while SLOW runs.
+  slow_finished = false;
+  Concurrence tie_earlier(spec({{"mixed", {{"SLOW", "done"}}}, {"succeeded", {{"FAST", "done"}}}}));
+  tie_earlier.add("FAST", returns("done"));
+  tie_earlier.add("SLOW", slowDone(slow_finished));
+  CHECK(rt::run(tie_earlier).outcome == "mixed");
+  CHECK(slow_finished);
+}
+
+TEST_CASE("an entry without conditions never decides early") {
+  std::atomic<bool> slow_finished{false};
+  Concurrence con(spec({{"mixed", {}}, {"succeeded", {{"SLOW", "done"}}}}));
   con.add("FAST", returns("done"));
-  con.add("SLOW", std::make_unique<LambdaState>(StateSpec{.outcomes = {"done"}},
-                                                [&](State& self, UserData&) -> std::string {
-                                                  bool preempted = self.waitForPreempt(50ms);
-                                                  slow_finished = !preempted;
-                                                  return "done";
-                                                }));
-  CHECK(rt::run(con).outcome == "mixed");
+  con.add("SLOW", slowDone(slow_finished));
+  CHECK(rt::run(con).outcome == "succeeded");
   CHECK(slow_finished);
 }
 

@@ -12,7 +12,7 @@ using rt::StateSpec;
 using rt::UserData;
 using rt::Value;
 
-TEST_CASE("CallbacksState runs its callbacks in key order and declares their keys") {
+TEST_CASE("CallbacksState runs its callbacks in the order given and declares their keys") {
   std::vector<std::string> order;
   auto state = std::make_unique<rt::CallbacksState>(StateSpec{.input_keys = {"x", "a"}},
                                                     rt::Callbacks{{"b",
@@ -25,13 +25,13 @@ TEST_CASE("CallbacksState runs its callbacks in key order and declares their key
                                                                      return ud.get<double>("x") * 2;
                                                                    }}});
   CHECK(state->outcomes() == rt::Keys{"succeeded"});
-  CHECK(state->outputKeys() == rt::Keys{"a", "b"});
-  StateMachine sm({.outcomes = {"succeeded"}, .userdata = {{"x", 3.0}}});
+  CHECK(state->outputKeys() == rt::Keys{"b", "a"});
+  StateMachine sm({.outcomes = {"succeeded"}, .userdata = {{"x", 3.0}, {"a", 0.5}}});
   sm.add("CB", std::move(state));
   REQUIRE(rt::run(sm).ok());
-  CHECK(order == std::vector<std::string>{"a", "b"});
+  CHECK(order == std::vector<std::string>{"b", "a"});
+  CHECK(sm.userdata().get<double>("b") == 1.5);  // read `a` before the second callback set it
   CHECK(sm.userdata().get<double>("a") == 6.0);
-  CHECK(sm.userdata().get<double>("b") == 7.0);
 }
 
 TEST_CASE("PrintUserdataState prints its input keys as SMACH would") {
@@ -100,12 +100,24 @@ TEST_CASE("ConditionalOutcomeState returns the first outcome whose condition hol
   CHECK(rt::run(*small).outcome == "small");
   auto none = machine(-1);
   CHECK(rt::run(*none).outcome == "default");
-  CHECK_FALSE(none->userdata().contains("outcome"));
+  CHECK(none->userdata().get<std::string>("outcome") == "default");
 
   rt::ConditionalOutcomeState state(StateSpec{.outcomes = {"default", "go"}});
   CHECK(state.outcomes() == rt::Keys{"go", "default"});
   CHECK(state.inputKeys() == rt::Keys{"go"});
   CHECK(state.outputKeys() == rt::Keys{"go", "outcome"});
+}
+
+TEST_CASE("ConditionalOutcomeState skips a condition that is not set, as SMACH does") {
+  StateMachine sm({.outcomes = {"first", "second", "default"},
+                   .userdata = {{"second", true}, {"outcome", "stale"}}});
+  sm.add("CHOOSE",
+         std::make_unique<rt::ConditionalOutcomeState>(StateSpec{.outcomes = {"first", "second"}}));
+  const rt::RunResult result = rt::run(sm);
+  CHECK(result.error.empty());
+  CHECK(result.outcome == "second");
+  CHECK(sm.userdata().get<std::string>("outcome") == "second");
+  CHECK_FALSE(sm.userdata().contains("first"));
 }
 
 TEST_CASE("SleepState sleeps, or returns `preempted` at once when asked") {

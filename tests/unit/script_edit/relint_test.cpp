@@ -1,7 +1,9 @@
 // Every contain golden case (tests/golden/contain) run through the library: the result loads
-// again, and lints without errors — and without warnings when the input had none.
+// again, and lints without errors — and without warnings when the input had none, except the
+// version-dependent-outcome-map warnings that a Concurrence made from a sequence may deserve.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -49,6 +51,15 @@ std::optional<GoldenCase> readCase(const fs::path& path) {
   return c;
 }
 
+/// The warnings of `result` that containing may not add. A Concurrence made from a sequence
+/// maps outcomes of states that, once they run at the same time, can all end the way their
+/// entries need; SMACH versions choose among such entries differently, and lint says so.
+size_t warningsContainingMayNotAdd(const testing::LintResult& result) {
+  auto version_dependent =
+      std::count(result.kinds.begin(), result.kinds.end(), "version-dependent-outcome-map");
+  return result.warnings - static_cast<size_t>(version_dependent);
+}
+
 }  // namespace
 
 TEST_CASE("contain golden cases load and lint again") {
@@ -69,7 +80,7 @@ TEST_CASE("contain golden cases load and lint again") {
     testing::LintResult after = testing::lint(temp.write(name, *out), c->script_dirs);
     CAPTURE(after.kinds);
     CHECK(after.errors == 0);
-    if (before.errors == 0 && before.warnings == 0) CHECK(after.warnings == 0);
+    if (before.errors == 0 && before.warnings == 0) CHECK(warningsContainingMayNotAdd(after) == 0);
     ++checked;
   }
   CHECK(checked >= 10);

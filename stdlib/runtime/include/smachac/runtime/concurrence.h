@@ -8,8 +8,9 @@
 //   4. default_outcome.
 //
 // An entry {container_outcome: {child: outcome, ...}} is satisfied when every child it names
-// returned that outcome. Entries rank by how many children they name (more wins, as SMACH
-// documents for subsets), then by map order, later wins (what SMACH's loop does for ties).
+// returned that outcome. Among satisfied entries, the one with the most conditions wins, then
+// the first in map order; an entry without conditions is never chosen (SMACH 2.5's rule, see
+// "Choosing among outcome_map entries" in the runtime's README.md).
 // With early_exit (the default), an entry decides as soon as it is satisfied and no entry that
 // could still be satisfied ranks above it: the children still running are preempted.
 // child_termination_cb runs after each child returns; returning true preempts the others.
@@ -88,6 +89,7 @@ class Concurrence : public Container {
   ChildOutcomes snapshotLocked() const;
   bool satisfied(const Entry& entry) const;
   bool possible(const Entry& entry) const;
+  bool choosable(const Entry& entry) const;  ///< has conditions and all hold
   bool outranks(int a, int b) const;
   std::optional<int> decideLocked(bool final) const;
   std::string chooseOutcome(const ChildOutcomes& outcomes_so_far, std::optional<int> entry);

@@ -3,21 +3,22 @@
 //   CallbacksState           runs its callbacks, returns `succeeded`
 //   PrintUserdataState       prints `userdata.<key>: <value>` for each input key
 //   RandomOutcomeState       runs its callbacks, picks one of its outcomes (seedable)
-//   ConditionalOutcomeState  runs its callbacks, returns the first outcome whose key is true,
-//                            else `default`
+//   ConditionalOutcomeState  runs its callbacks, returns the first outcome whose key is set
+//                            and true, else `default`, and writes the choice to `outcome`
 //   SleepState               sleeps, waking at once on preemption (then returns `preempted`)
 //
 // A callback computes the value of one output key from the userdata: callbacks are keyed by
-// that output key, which the state declares for them, and run in key order (SMACHA sorts
-// callbacks by name).
+// that output key, which the state declares for them, and run in the order given (the
+// script's order, which the SMACH target's state classes follow too).
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
-#include <map>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "smachac/runtime/state.h"
 #include "smachac/runtime/value.h"
@@ -25,10 +26,10 @@
 namespace smachac::runtime {
 
 using Callback = std::function<Value(UserData&)>;
-/// output key -> callback writing it.
-using Callbacks = std::map<std::string, Callback>;
+/// (output key, callback writing it), in the order they run.
+using Callbacks = std::vector<std::pair<std::string, Callback>>;
 
-/// Runs `callbacks` in key order, writing each result to its key.
+/// Runs `callbacks` in order, writing each result to its key.
 void runCallbacks(const Callbacks& callbacks, UserData& userdata);
 
 /// Seed for RandomOutcomeStates made without one (each mixes in its path). Unset: random.

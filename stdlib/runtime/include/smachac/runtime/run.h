@@ -31,6 +31,8 @@ RunResult run(State& root, UserDataStore* parent = nullptr);
 ///   --trace-file=PATH    write the JSON-lines trace to PATH
 ///   --seed=N             seed every RandomOutcomeState made without a seed
 ///   --quiet              do not print `outcome: <outcome>` on stdout
+///   --print-userdata     then print `userdata: {...}`: the top container's final userdata
+///                        in Python's spelling (keys sorted), for comparing runs of targets
 /// SIGINT and SIGTERM preempt the machine (a second one ends the process). Returns the exit
 /// code: 0 when the machine returned an outcome, 1 when it failed, 2 on a bad flag.
 int runMain(State& root, int argc, char** argv);

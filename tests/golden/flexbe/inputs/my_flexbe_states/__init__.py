@@ -1,0 +1,1 @@
+"""The second state package of the import_clash golden case (inputs/templates/OtherWaitState)."""

@@ -19,12 +19,12 @@ Prints one line per run (`ok`, `FAIL` with the reason, `skip` with why) and
 import concurrent.futures
 import json
 import os
-import shlex
 import sys
 
 import flexbe_package
 import trace_protocol
 from report import Report as LineReport
+from golden_case import cases_with_output
 from ros_session import PYTHON, run_test
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -36,30 +36,6 @@ ROS2_SKIP = ("flexbe/ros2: the ROS 2 behaviors are checked structurally only "
 
 
 # ---------------------------------------------------------------- cases
-
-class Case:
-    """A golden script and what its header declares."""
-
-    def __init__(self, golden_dir, name):
-        self.golden_dir = golden_dir
-        self.name = name
-        self.args, self.outcome, self.no_execute = [], None, None
-        with open(os.path.join(golden_dir, name + ".yml"), encoding="utf-8") as f:
-            for line in f:
-                if not line.startswith("#"):
-                    break
-                self.read_header(line[1:].strip())
-
-    def read_header(self, line):
-        key, _, value = line.partition(":")
-        value = value.strip()
-        if key == "ARGS":
-            self.args = compile_args(shlex.split(value))
-        elif key == "OUTCOME":
-            self.outcome = value
-        elif key == "EXECUTE" and value.startswith("no"):
-            self.no_execute = value[2:].strip(" ()") or "EXECUTE: no"
-
 
 def compile_args(args):
     """The golden's smachac arguments without its output and ROS version."""
@@ -75,8 +51,7 @@ def compile_args(args):
 
 
 def golden_cases(golden_dir):
-    return [Case(golden_dir, entry[:-len(".flexbe.py")])
-            for entry in sorted(os.listdir(golden_dir)) if entry.endswith(".flexbe.py")]
+    return cases_with_output(golden_dir, ".flexbe.py")
 
 
 # ---------------------------------------------------------------- checks of one run
@@ -190,15 +165,15 @@ def generated(smachac, case, work, report):
         report.skip(label, case.no_execute)
         return None
     try:
-        package = flexbe_package.generate(smachac, case.name + ".yml", case.args,
-                                          case.golden_dir, os.path.join(work, case.name))
+        package = flexbe_package.generate(smachac, case.name + ".yml", compile_args(case.args),
+                                          case.folder, os.path.join(work, case.name))
     except flexbe_package.GenerateError as error:
         report.fail(label, str(error))
         return None
     if len(package.top) != 1:
         report.fail(label, "expected one top behavior, the manifests give %s" % package.top)
         return None
-    package.inputs = os.path.join(case.golden_dir, "inputs")
+    package.inputs = os.path.join(case.folder, "inputs")
     return package
 
 

@@ -1,4 +1,4 @@
-"""A SMACH golden case (tests/golden/smach/<name>.yml) as the ROS tests see it.
+"""A golden case (tests/golden/<area>/<name>.yml) as the ROS tests see it.
 
 Its leading comment lines may hold:
     # ARGS: <smachac arguments>        as for the golden runner (the case file is appended,
@@ -11,11 +11,11 @@ import shlex
 
 
 class GoldenCase:
-    def __init__(self, yml_path):
+    def __init__(self, yml_path, expected_extension=".smach.py"):
         self.yml = os.path.abspath(yml_path)
         self.folder, file_name = os.path.split(self.yml)
         self.name = file_name[:-len(".yml")]
-        self.expected_python = os.path.join(self.folder, self.name + ".smach.py")
+        self.expected_python = os.path.join(self.folder, self.name + expected_extension)
         self.args, self.outcome, self.no_execute = [], None, None
         self._read_header()
 
@@ -44,10 +44,12 @@ class GoldenCase:
             return f.read()
 
 
+def cases_with_output(folder, expected_extension):
+    """The cases of folder that have an expected output (fail_* cases have none), sorted."""
+    return [GoldenCase(os.path.join(folder, entry[:-len(expected_extension)] + ".yml"),
+                       expected_extension)
+            for entry in sorted(os.listdir(folder)) if entry.endswith(expected_extension)]
+
+
 def smach_cases(folder):
-    """The cases of folder that have expected SMACH Python (fail_* cases have none), sorted."""
-    cases = []
-    for entry in sorted(os.listdir(folder)):
-        if entry.endswith(".yml") and os.path.exists(os.path.join(folder, entry[:-4] + ".smach.py")):
-            cases.append(GoldenCase(os.path.join(folder, entry)))
-    return cases
+    return cases_with_output(folder, ".smach.py")

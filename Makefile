@@ -26,7 +26,11 @@ build: configure
 test: build
 	@bash tools/run-tests.sh $(BUILD) $(JOBS)
 
-demo: build
+# Builds only what the demo runs (the compiler and the dual-arm program with the runtime and
+# the simulation it links), not the tests.
+DEMO_TARGETS := smachac baxter_dual_arm_stacking
+demo: configure
+	cmake --build $(BUILD) -j $(JOBS) --target $(DEMO_TARGETS)
 	@bash tools/demo.sh $(SMACHAC)
 	@bash sim/experiments/run_demo.sh $(BUILD)
 

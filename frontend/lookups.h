@@ -1,5 +1,5 @@
 // SMACHA's params inheritance and lookups, applied to a state's keys before it is typed
-// (smacha-behaviour.md §2.5):
+// (SMACHA's lookup rules):
 //   * params: a state without `params` gets the inherited ones; a state with its own gets
 //     the inherited keys it lacks (its own values win).
 //   * lookups, in key order, each seeing the keys as rewritten so far: a key whose value is

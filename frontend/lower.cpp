@@ -7,6 +7,7 @@
 #include "frontend/resolve_transitions.h"
 #include "frontend/root_keys.h"
 #include "frontend/shorthand.h"
+#include "frontend/standalone_sub_script.h"
 #include "frontend/state_builder.h"
 #include "frontend/sub_scripts.h"
 #include "frontend/yaml_loader.h"
@@ -35,23 +36,41 @@ struct IncludeFrame {
 class Lowering {
  public:
   Lowering(const FrontendOptions& options, SourceManager& sources, DiagnosticEmitter& diags)
-      : sources_(sources), diags_(diags), loader_(options.script_dirs, sources, diags) {}
+      : sub_script_alone_(options.sub_script_alone),
+        sources_(sources),
+        diags_(diags),
+        loader_(options.script_dirs, sources, diags),
+        errors_before_(diags.errorCount()) {}
 
   std::optional<ir::Module> run(LoadedYaml loaded) {
     if (!loaded.root) return std::nullopt;
     module_.files().push_back(loaded.file);
+    std::vector<ir::Name> output_keys;
+    if (sub_script_alone_ && isSubScript(*loaded.root)) {
+      StandaloneScript script = standaloneScript(*loaded.root, diags_);
+      *loaded.root = std::move(script.root);
+      output_keys = std::move(script.output_keys);
+    }
     if (!lowerRoot(*loaded.root)) return std::nullopt;
+    module_.state(module_.root()).output_keys = std::move(output_keys);
     for (uint32_t f : loader_.files()) module_.files().push_back(f);
     resolveTransitions(module_);
-    if (diags_.hasErrors()) return std::nullopt;
+    if (diags_.errorCount() > errors_before_) return std::nullopt;
     return std::move(module_);
   }
+
+  const IncludeSites& includeSites() const { return loader_.includeSites(); }
 
  private:
   bool lowerRoot(Value& root) {
     if (!root.isMap()) {
       SourceLoc where = root.loc.hasFile() ? root.loc : SourceLoc{module_.files()[0], 0, 0, 1};
       diags_.emit(DiagKind::RootNotMapping, where, describeValue(root));
+      if (isSubScript(root)) {
+        diags_.note(where,
+                    "this is a sub-script: compile a script that includes it; `smachac lint` "
+                    "checks it on its own");
+      }
       return false;
     }
     expandShorthand(root, diags_);
@@ -253,9 +272,11 @@ class Lowering {
     }
   }
 
+  bool sub_script_alone_;
   SourceManager& sources_;
   DiagnosticEmitter& diags_;
   SubScriptLoader loader_;
+  size_t errors_before_;  ///< errors of earlier scripts (lint checks several in one session)
   ir::Module module_;
 };
 
@@ -263,7 +284,10 @@ class Lowering {
 
 std::optional<ir::Module> lowerScript(const std::string& path, const FrontendOptions& options,
                                       SourceManager& sources, DiagnosticEmitter& diags) {
-  return Lowering(options, sources, diags).run(loadYamlFile(path, {}, sources, diags));
+  Lowering lowering(options, sources, diags);
+  std::optional<ir::Module> module = lowering.run(loadYamlFile(path, {}, sources, diags));
+  if (options.include_sites) *options.include_sites = lowering.includeSites();
+  return module;
 }
 
 std::optional<ir::Module> lowerScriptText(const std::string& path, std::string text,
@@ -271,7 +295,10 @@ std::optional<ir::Module> lowerScriptText(const std::string& path, std::string t
                                           DiagnosticEmitter& diags) {
   uint32_t file = sources.addFile(path, std::move(text));
   LoadedYaml loaded{file, parseYaml(file, sources, diags)};
-  return Lowering(options, sources, diags).run(std::move(loaded));
+  Lowering lowering(options, sources, diags);
+  std::optional<ir::Module> module = lowering.run(std::move(loaded));
+  if (options.include_sites) *options.include_sites = lowering.includeSites();
+  return module;
 }
 
 }  // namespace smachac::frontend

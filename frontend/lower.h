@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "frontend/include_notes.h"
 #include "ir/module.h"
 #include "ir/support/diagnostic_emitter.h"
 #include "ir/support/source_manager.h"
@@ -26,6 +27,10 @@ namespace smachac::frontend {
 
 struct FrontendOptions {
   std::vector<std::string> script_dirs;  ///< -S, searched after the including file's dir
+  /// When set, filled with where each sub-script is included (include_notes.h).
+  IncludeSites* include_sites = nullptr;
+  /// lint: a script that is a sub-script is checked in a stand-in (standalone_sub_script.h).
+  bool sub_script_alone = false;
 };
 
 std::optional<ir::Module> lowerScript(const std::string& path, const FrontendOptions& options,

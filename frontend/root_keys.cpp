@@ -45,7 +45,7 @@ bool buildRootState(const ir::Value& root, ir::State& state, DiagnosticEmitter& 
   bool complete = true;
   for (const char* key : {"name", "template", "states"}) {
     if (!root.find(key)) {
-      diags.emit(DiagKind::MissingKey, SourceLoc{root.loc.file, 0, 0, 1}, "the script", key);
+      diags.emit(DiagKind::MissingKey, root.loc, "the script", key);
       complete = false;
     }
   }

@@ -63,15 +63,13 @@ std::optional<SubScriptState> SubScriptLoader::load(const ir::Name& script) {
       if (loaded.file != 0) files_.push_back(loaded.file);
       it = cache_.emplace(canonical, Cached{loaded.file, std::move(loaded.root)}).first;
     }
-    if (!it->second.root) {
-      diags_.note(script.loc, "included from here");
-      return std::nullopt;
-    }
+    if (it->second.file != 0) sites_[it->second.file].push_back(script.loc);
+    if (!it->second.root) return std::nullopt;
     std::string dir = fs::path(sources_.path(script.loc.file)).parent_path().string();
     if (climbsOut(script.text, dir, canonical)) {
       diags_.emit(DiagKind::SubScriptOutsideDir, script.loc, script.text, path);
     }
-    std::optional<SubScriptState> state = validate(script, it->second.file, *it->second.root);
+    std::optional<SubScriptState> state = validate(it->second.file, *it->second.root);
     if (state) state->canonical_path = canonical;
     return state;
   }
@@ -80,8 +78,7 @@ std::optional<SubScriptState> SubScriptLoader::load(const ir::Name& script) {
   return std::nullopt;
 }
 
-std::optional<SubScriptState> SubScriptLoader::validate(const ir::Name& script, uint32_t file,
-                                                        const ir::Value& root) {
+std::optional<SubScriptState> SubScriptLoader::validate(uint32_t file, const ir::Value& root) {
   std::string found = describeValue(root);
   if (root.isList() && root.asList().size() != 1) {
     found = fmt::format("a list of {} entries", root.asList().size());
@@ -95,7 +92,6 @@ std::optional<SubScriptState> SubScriptLoader::validate(const ir::Name& script, 
   }
   SourceLoc where = root.loc.hasFile() ? root.loc : SourceLoc{file, 1, 1, 1};
   diags_.emit(DiagKind::SubScriptNotOneState, where, sources_.path(file), found);
-  diags_.note(script.loc, "included from here");
   return std::nullopt;
 }
 

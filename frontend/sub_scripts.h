@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "frontend/include_notes.h"
 #include "ir/state.h"
 #include "ir/support/diagnostic_emitter.h"
 #include "ir/support/source_manager.h"
@@ -36,11 +37,12 @@ class SubScriptLoader {
 
   /// Files read so far, in order.
   const std::vector<uint32_t>& files() const { return files_; }
+  /// Where each file read so far is included, in order.
+  const IncludeSites& includeSites() const { return sites_; }
 
  private:
   std::vector<std::string> candidates(const ir::Name& script) const;
-  std::optional<SubScriptState> validate(const ir::Name& script, uint32_t file,
-                                         const ir::Value& root);
+  std::optional<SubScriptState> validate(uint32_t file, const ir::Value& root);
 
   std::vector<std::string> search_dirs_;
   SourceManager& sources_;
@@ -51,6 +53,7 @@ class SubScriptLoader {
   };
   std::map<std::string, Cached> cache_;  ///< by canonical path
   std::vector<uint32_t> files_;
+  IncludeSites sites_;
 };
 
 }  // namespace smachac::frontend

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "frontend/simple_yaml_reader.h"
+#include "frontend/yaml_syntax_hints.h"
 
 namespace smachac::frontend {
 namespace {
@@ -51,6 +52,27 @@ class YamlCppEvents : public YAML::EventHandler {
   YamlValueBuilder& builder_;
 };
 
+/// Ignores a document's events but where it starts.
+class DocumentStart : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark& mark) override { mark_ = mark; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+  const YAML::Mark& mark() const { return mark_; }
+
+ private:
+  YAML::Mark mark_ = YAML::Mark::null_mark();
+};
+
 SourceLoc markLoc(uint32_t file, const YAML::Mark& mark) {
   if (mark.is_null()) return {file, 0, 0, 1};
   return {file, static_cast<uint32_t>(std::max(mark.line, 0) + 1),
@@ -67,12 +89,20 @@ std::optional<ir::Value> buildYamlValueWithYamlCpp(uint32_t file, std::string_vi
   try {
     YAML::Parser parser(stream);
     parser.HandleNextDocument(events);
+    DocumentStart second;
+    if (parser.HandleNextDocument(second)) {
+      diags.emit(DiagKind::MultipleDocuments, markLoc(file, second.mark()));
+      return std::nullopt;
+    }
   } catch (const YAML::DeepRecursion& e) {
     diags.emit(DiagKind::YamlTooComplex, markLoc(file, e.mark),
                "YAML nested too deeply for the parser");
     return std::nullopt;
   } catch (const YAML::Exception& e) {
     diags.emit(DiagKind::YamlSyntax, markLoc(file, e.mark), e.msg);
+    if (std::optional<std::string> hint = yamlSyntaxHint(e.msg)) {
+      diags.note(markLoc(file, e.mark), *hint);
+    }
     return std::nullopt;
   }
   std::optional<ir::Value> root = builder.take();

@@ -15,8 +15,9 @@
 
 namespace smachac::frontend {
 
-/// Parses the first YAML document of `text` (file id `file`). nullopt after an error that
-/// leaves no usable document; other errors are reported and the document is still returned.
+/// Parses the one YAML document of `text` (file id `file`). nullopt after an error that
+/// leaves no usable document, a second document included; other errors are reported and the
+/// document is still returned.
 std::optional<ir::Value> buildYamlValue(uint32_t file, std::string_view text,
                                         DiagnosticEmitter& diags);
 

@@ -23,7 +23,7 @@ std::optional<std::string> readRegularFile(const std::string& path, SourceLoc fr
     return std::nullopt;
   }
   if (!fs::is_regular_file(status)) {
-    diags.emit(DiagKind::FileNotFound, from, path,
+    diags.emit(DiagKind::UnreadableFile, from, path,
                fs::is_directory(status) ? "it is a directory" : "it is not a regular file");
     return std::nullopt;
   }
@@ -34,7 +34,7 @@ std::optional<std::string> readRegularFile(const std::string& path, SourceLoc fr
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    diags.emit(DiagKind::FileNotFound, from, path, "permission denied or unreadable");
+    diags.emit(DiagKind::UnreadableFile, from, path, "permission denied or unreadable");
     return std::nullopt;
   }
   std::string text;

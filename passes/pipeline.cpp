@@ -73,11 +73,13 @@ const PassInfo* findPass(std::string_view name) {
 }
 
 bool runPipeline(ir::Module& module, PassContext& context, const PipelineOptions& options) {
+  size_t errors_before = context.diags.errorCount();
+  auto has_errors = [&] { return context.diags.errorCount() > errors_before; };
   for (const PassInfo& pass : kPasses) {
     if (options.disabled.contains(pass.name)) continue;
     if (pass.kind == PassKind::Check) {
       pass.check(module, context);
-    } else if (options.optimize && !context.diags.hasErrors()) {
+    } else if (options.optimize && !has_errors()) {
       pass.transform(module, context);
       std::optional<std::string> problem = ir::verify(module);
       SMACHAC_CHECK(!problem, problem ? problem->c_str() : "a transform broke the IR");
@@ -85,7 +87,7 @@ bool runPipeline(ir::Module& module, PassContext& context, const PipelineOptions
     bool print = options.print_ir_after == "all" || options.print_ir_after == pass.name;
     if (print && options.print_ir) options.print_ir(pass.name, module);
   }
-  return !context.diags.hasErrors();
+  return !has_errors();
 }
 
 }  // namespace smachac::passes

@@ -30,29 +30,29 @@ std::pair<int, int> lineColumnAt(std::string_view text, size_t offset) {
   return {line, column};
 }
 
-Value fromJson(const nlohmann::json& j) {
+Value fromJson(const nlohmann::ordered_json& j) {
   switch (j.type()) {
-    case nlohmann::json::value_t::null:
+    case nlohmann::ordered_json::value_t::null:
       return Value::none();
-    case nlohmann::json::value_t::boolean:
+    case nlohmann::ordered_json::value_t::boolean:
       return Value::boolean(j.get<bool>());
-    case nlohmann::json::value_t::number_integer:
+    case nlohmann::ordered_json::value_t::number_integer:
       return Value::integer(j.get<int64_t>());
-    case nlohmann::json::value_t::number_unsigned: {
+    case nlohmann::ordered_json::value_t::number_unsigned: {
       auto u = j.get<uint64_t>();
       if (u > static_cast<uint64_t>(INT64_MAX)) fail("integer out of range");
       return Value::integer(static_cast<int64_t>(u));
     }
-    case nlohmann::json::value_t::number_float:
+    case nlohmann::ordered_json::value_t::number_float:
       return Value::real(j.get<double>());
-    case nlohmann::json::value_t::string:
+    case nlohmann::ordered_json::value_t::string:
       return Value::string(j.get<std::string>());
-    case nlohmann::json::value_t::array: {
+    case nlohmann::ordered_json::value_t::array: {
       std::vector<Value> items;
       for (const auto& item : j) items.push_back(fromJson(item));
       return Value::newList(std::move(items));
     }
-    case nlohmann::json::value_t::object: {
+    case nlohmann::ordered_json::value_t::object: {
       Value dict = Value::newDict();
       for (const auto& [k, v] : j.items()) dict.dict().setString(k, fromJson(v));
       return dict;
@@ -163,12 +163,13 @@ Value fromYaml(const YAML::Node& node, int depth) {
 
 Value parseJson(std::string_view text, std::string_view origin) {
   try {
-    auto limitDepth = [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+    auto limitDepth = [](int depth, nlohmann::ordered_json::parse_event_t,
+                         nlohmann::ordered_json&) {
       if (depth > kMaxDepth) throw Fault("the document is nested too deeply");
       return true;
     };
-    return fromJson(nlohmann::json::parse(text.begin(), text.end(), limitDepth));
-  } catch (const nlohmann::json::parse_error& e) {
+    return fromJson(nlohmann::ordered_json::parse(text.begin(), text.end(), limitDepth));
+  } catch (const nlohmann::ordered_json::parse_error& e) {
     auto [line, column] = lineColumnAt(text, e.byte > 0 ? e.byte - 1 : 0);
     std::string message = e.what();
     size_t colon = message.rfind(": ");

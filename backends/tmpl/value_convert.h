@@ -1,5 +1,6 @@
-// Building template values from JSON and YAML documents (render contexts). YAML uses the
-// YAML 1.2 core schema: `yes`/`no` stay strings, quoted scalars are strings, map order is kept.
+// Building template values from JSON and YAML documents (render contexts). Both keep the order
+// of mapping keys, as Jinja2's dicts do. YAML uses the YAML 1.2 core schema: `yes`/`no` stay
+// strings, quoted scalars are strings.
 #pragma once
 
 #include <string_view>

@@ -47,4 +47,8 @@ std::string_view severityName(Severity severity) {
   return "error";
 }
 
+bool isIoError(DiagKind kind) {
+  return kind == DiagKind::FileNotFound || kind == DiagKind::UnreadableFile;
+}
+
 }  // namespace smachac

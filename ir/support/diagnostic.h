@@ -30,6 +30,8 @@ const DiagKindInfo& diagKindInfo(DiagKind kind);
 std::vector<DiagKind> allDiagKinds();
 std::optional<DiagKind> diagKindByName(std::string_view name);
 std::string_view severityName(Severity severity);
+/// True for the kinds that say a file could not be read (the driver's exit code 2).
+bool isIoError(DiagKind kind);
 
 struct DiagNote {
   SourceLoc loc;

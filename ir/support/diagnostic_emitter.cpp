@@ -1,6 +1,8 @@
 // DiagnosticEmitter: severity resolution and collection.
 #include "ir/support/diagnostic_emitter.h"
 
+#include <algorithm>
+
 namespace smachac {
 
 void DiagnosticEmitter::report(DiagKind kind, SourceLoc loc, std::string message) {
@@ -15,6 +17,16 @@ void DiagnosticEmitter::report(DiagKind kind, SourceLoc loc, std::string message
 void DiagnosticEmitter::note(SourceLoc loc, std::string message) {
   if (last_dropped_ || diagnostics_.empty()) return;
   diagnostics_.back().notes.push_back({loc, std::move(message)});
+}
+
+void DiagnosticEmitter::replaceFrom(size_t first, std::vector<Diagnostic> replacement) {
+  diagnostics_.resize(std::min(first, diagnostics_.size()));
+  for (Diagnostic& d : replacement) diagnostics_.push_back(std::move(d));
+  error_count_ = warning_count_ = 0;
+  for (const Diagnostic& d : diagnostics_) {
+    if (d.severity == Severity::Error) ++error_count_;
+    if (d.severity == Severity::Warning) ++warning_count_;
+  }
 }
 
 }  // namespace smachac

@@ -33,6 +33,9 @@ class DiagnosticEmitter {
   size_t warningCount() const { return warning_count_; }
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
+  /// Replaces the diagnostics from index `first` on (already filtered by -W) and recounts.
+  void replaceFrom(size_t first, std::vector<Diagnostic> replacement);
+
  private:
   void report(DiagKind kind, SourceLoc loc, std::string message);
 

@@ -23,20 +23,39 @@ size_t editDistance(std::string_view a, std::string_view b) {
   return d[a.size()][b.size()];
 }
 
+namespace {
+
+/// The edit distance within which a candidate is close to `word`.
+size_t closenessLimit(std::string_view word) { return std::clamp<size_t>(word.size() / 3, 1, 3); }
+
+}  // namespace
+
 std::optional<std::string> closestMatch(std::string_view word,
                                         std::span<const std::string> candidates) {
-  size_t limit = std::clamp<size_t>(word.size() / 3, 1, 3);
-  std::optional<std::string> best;
-  size_t best_distance = limit + 1;
+  std::vector<std::string> matches = closeMatches(word, candidates, 1);
+  if (matches.empty()) return std::nullopt;
+  return matches.front();
+}
+
+std::vector<std::string> closeMatches(std::string_view word,
+                                      std::span<const std::string> candidates, size_t limit) {
+  std::vector<std::pair<size_t, const std::string*>> close;
   for (const std::string& candidate : candidates) {
-    if (candidate == word) continue;
     size_t distance = editDistance(word, candidate);
-    if (distance < best_distance) {
-      best_distance = distance;
-      best = candidate;
-    }
+    if (candidate != word && distance <= closenessLimit(word))
+      close.emplace_back(distance, &candidate);
   }
-  return best;
+  std::stable_sort(close.begin(), close.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> matches;
+  for (size_t i = 0; i < close.size() && i < limit; ++i) matches.push_back(*close[i].second);
+  return matches;
+}
+
+std::string quotedList(std::span<const std::string> names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "`" : ", `") + name + "`";
+  return list;
 }
 
 std::string didYouMean(std::string_view word, std::span<const std::string> candidates) {

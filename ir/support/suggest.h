@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace smachac {
 
@@ -15,6 +16,14 @@ size_t editDistance(std::string_view a, std::string_view b);
 /// (at least 1, at most 3 edits); ties go to the earliest candidate. Never `word` itself.
 std::optional<std::string> closestMatch(std::string_view word,
                                         std::span<const std::string> candidates);
+
+/// Every candidate as close to `word` as closestMatch requires, closest first (ties in
+/// candidate order), at most `limit` of them.
+std::vector<std::string> closeMatches(std::string_view word,
+                                      std::span<const std::string> candidates, size_t limit);
+
+/// "`a`, `b`, `c`": names in backticks, as diagnostic messages list them.
+std::string quotedList(std::span<const std::string> names);
 
 /// "; did you mean `x`?" or "" — the suffix used by diagnostic messages.
 std::string didYouMean(std::string_view word, std::span<const std::string> candidates);

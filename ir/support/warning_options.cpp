@@ -1,18 +1,52 @@
 // Parsing and applying -W flags.
 #include "ir/support/warning_options.h"
 
+#include <algorithm>
+
 #include "ir/support/suggest.h"
 
 namespace smachac {
 namespace {
 
-std::vector<std::string> kindNames() {
-  std::vector<std::string> names;
+constexpr std::string_view kGroups[] = {"all", "extra", "everything"};
+
+/// The kinds a -W name stands for: one kind, or each kind of a group; empty when unknown.
+std::vector<DiagKind> kindsNamed(std::string_view name) {
+  if (std::optional<DiagKind> kind = diagKindByName(name)) return {*kind};
+  std::vector<DiagKind> kinds;
+  for (DiagKind kind : allDiagKinds()) {
+    Severity severity = diagKindInfo(kind).default_severity;
+    bool in_group = name == "everything" || (name == "extra" && severity != Severity::Error) ||
+                    (name == "all" && severity == Severity::Warning);
+    if (in_group) kinds.push_back(kind);
+  }
+  return kinds;
+}
+
+constexpr size_t kMaxSuggestions = 4;
+
+/// "; did you mean `x`?" or "; did you mean one of `x`, `y`?": the kinds and groups close to
+/// `name`, then those it begins.
+std::string closeNames(std::string_view name) {
+  std::vector<std::string> names = warningGroupNames();
   for (DiagKind kind : allDiagKinds()) names.emplace_back(diagKindInfo(kind).name);
-  return names;
+  std::vector<std::string> close = closeMatches(name, names, kMaxSuggestions);
+  for (const std::string& candidate : names) {
+    bool listed = std::find(close.begin(), close.end(), candidate) != close.end();
+    if (close.size() < kMaxSuggestions && !listed && candidate.starts_with(name)) {
+      close.push_back(candidate);
+    }
+  }
+  if (close.empty()) return "; `smachac --list-warnings` lists them";
+  return (close.size() == 1 ? "; did you mean " : "; did you mean one of ") + quotedList(close) +
+         "?";
 }
 
 }  // namespace
+
+std::vector<std::string> warningGroupNames() {
+  return std::vector<std::string>(std::begin(kGroups), std::end(kGroups));
+}
 
 std::optional<std::string> WarningOptions::apply(std::string_view flag) {
   if (flag.starts_with("-W")) flag.remove_prefix(2);
@@ -31,13 +65,11 @@ std::optional<std::string> WarningOptions::apply(std::string_view flag) {
     setting = Setting::Disable;
     flag.remove_prefix(3);
   }
-  std::optional<DiagKind> kind = diagKindByName(flag);
-  if (!kind) {
-    std::vector<std::string> names = kindNames();
-    return "unknown diagnostic kind `" + std::string(flag) + "` in -W flag" +
-           didYouMean(flag, names);
+  std::vector<DiagKind> kinds = kindsNamed(flag);
+  if (kinds.empty()) {
+    return "unknown diagnostic kind `" + std::string(flag) + "` in -W flag" + closeNames(flag);
   }
-  settings_[*kind].push_back(setting);
+  for (DiagKind kind : kinds) settings_[kind].push_back(setting);
   return std::nullopt;
 }
 

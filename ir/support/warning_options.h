@@ -5,6 +5,10 @@
 //   -Werror=<kind>      that warning is an error
 //   -Wno-error=<kind>   that warning stays a warning under -Werror; an adjustable error
 //                       becomes a warning
+// A group name stands for each kind in it, in every spelling (-Wall, -Wno-extra, ...):
+//   all         the warnings on by default (default severity Warning)
+//   extra       all, and the warnings off by default (default severity Ignored)
+//   everything  every kind
 #pragma once
 
 #include <map>
@@ -16,6 +20,9 @@
 #include "ir/support/diagnostic.h"
 
 namespace smachac {
+
+/// The -W group names, in order of size: all, extra, everything.
+std::vector<std::string> warningGroupNames();
 
 class WarningOptions {
  public:

@@ -188,6 +188,7 @@ class ConcurrenceChecker {
     NameSet used;
     for (const ir::OutcomeMapEntry& entry : c_.outcome_map) used.insert(entry.outcome.text);
     if (c_.default_outcome) used.insert(c_.default_outcome->text);
+    used.insert("preempted");  // when it was preempted and every child serviced the request
     for (const ir::Name& outcome : c_.outcomes) {
       if (!used.insert(outcome.text).second) continue;
       diags_.emit(DiagKind::UnusedContainerOutcome, outcome.loc, c_.name.text, outcome.text,

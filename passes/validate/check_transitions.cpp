@@ -2,7 +2,8 @@
 // with SMACH's rules (state_machine.py: check_state_spec when a state is added,
 // check_consistency before it runs).
 //   * unknown-transition-target  a target that is neither a sibling state nor an outcome of
-//                                the container (did you mean: siblings and outcomes)
+//                                the container (did you mean: siblings and outcomes; without
+//                                a close one, the container's outcomes are listed)
 //   * undeclared-outcome         a transition on an outcome the state does not declare; only
 //                                for states whose outcomes are known (outcomes.h)
 //   * unmapped-outcome           a declared outcome with no transition that is not an outcome
@@ -45,7 +46,7 @@ class TransitionChecker {
   void checkTransition(const ir::State& child, const ir::Transition& t) {
     if (t.target_kind == ir::TargetKind::Unresolved) {
       diags_.emit(DiagKind::UnknownTransitionTarget, t.target.loc, t.target.text,
-                  container_.name.text, didYouMean(t.target.text, targets()));
+                  container_.name.text, suggestion(t.target.text));
     } else if (t.target_kind == ir::TargetKind::ContainerOutcome) {
       used_.insert(t.target.text);
     }
@@ -71,6 +72,14 @@ class TransitionChecker {
       diags_.emit(DiagKind::UnusedContainerOutcome, outcome.loc, container_.name.text, outcome.text,
                   "no transition or outcome of its states leads to it");
     }
+  }
+
+  /// "did you mean" a close sibling or outcome; without one, the container's outcomes.
+  std::string suggestion(const std::string& target) {
+    std::string close = didYouMean(target, targets());
+    if (!close.empty() || container_.outcomes.empty()) return close;
+    return "; the outcomes of `" + container_.name.text + "` are " +
+           quotedList(nameTexts(container_.outcomes));
   }
 
   /// Sibling names then container outcomes, for suggestions (built on first use).

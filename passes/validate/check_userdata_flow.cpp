@@ -12,7 +12,11 @@
 //   * maybe-undefined-userdata-key  some path reaches the read before any write: in a
 //                                   StateMachine or the root, by the must-defined dataflow over
 //                                   reachable states; in a Concurrence, whenever only the
-//                                   children (which run in parallel) write the key
+//                                   children (which run in parallel) write the key and a
+//                                   sibling of the reader does (when only the reader writes
+//                                   it, the key is undefined when it starts: the error above).
+//                                   Both note, when the parent's scope has the key, that the
+//                                   container's `input_keys` would copy it in.
 #include <fmt/core.h>
 
 #include <string>
@@ -66,34 +70,58 @@ class FlowChecker {
   bool defined(uint32_t key) const { return scope_.initiallyDefined(key) || scope_.written(key); }
 
   void checkDefined(uint32_t child, const KeyUse& read) {
-    if (read.optional || defined(read.key)) return;
+    if (!read.optional && !defined(read.key)) reportUndefined(child, read);
+  }
+
+  void reportUndefined(uint32_t child, const KeyUse& read) {
     if (names_.empty()) names_ = scope_.keyNames();
     diags_.emit(DiagKind::UndefinedUserdataKey, read.scope_name->loc, read.scope_name->text,
                 reader(child, read), container_.name.text,
                 didYouMean(read.scope_name->text, names_));
-    if (child != kExit && parent_keys_ && parent_keys_->contains(read.scope_name->text)) {
-      const std::string& parent = module_.state(container_.parent).name.text;
-      diags_.note(container_.name.loc,
-                  fmt::format("`{}` has `{}`: list it in the `input_keys` of `{}` to copy it in",
-                              parent, read.scope_name->text, container_.name.text));
-    }
+    if (child != kExit) noteParentHasKey(read);
   }
 
-  /// In a Concurrence, a key that only children write is undefined when they start.
+  /// The actionable note when the parent's scope has the key the container does not copy in.
+  void noteParentHasKey(const KeyUse& read) {
+    if (!parent_keys_ || !parent_keys_->contains(read.scope_name->text)) return;
+    const std::string& parent = module_.state(container_.parent).name.text;
+    diags_.note(container_.name.loc,
+                fmt::format("`{}` has `{}`: list it in the `input_keys` of `{}` to copy it in",
+                            parent, read.scope_name->text, container_.name.text));
+  }
+
+  /// In a Concurrence, a key that only children write is undefined when they start: maybe
+  /// undefined for a reader that a sibling races with, undefined for one only it writes.
   void checkParallelReads() {
     for (uint32_t child = 0; child < scope_.childCount(); ++child) {
       for (const KeyUse& read : scope_.reads(child)) {
-        if (!read.optional && !scope_.initiallyDefined(read.key) && scope_.written(read.key)) {
+        if (read.optional || scope_.initiallyDefined(read.key) || !scope_.written(read.key)) {
+          continue;
+        }
+        if (writtenByOther(child, read.key)) {
           reportMaybe(child, read);
+        } else {
+          reportUndefined(child, read);
         }
       }
     }
   }
 
+  bool writtenByOther(uint32_t reader, uint32_t key) const {
+    for (uint32_t child = 0; child < scope_.childCount(); ++child) {
+      for (const KeyUse& write : scope_.writes(child)) {
+        if (child != reader && write.key == key) return true;
+      }
+    }
+    return false;
+  }
+
   void reportMaybe(uint32_t child, const KeyUse& read) {
     diags_.emit(DiagKind::MaybeUndefinedUserdataKey, read.scope_name->loc, read.scope_name->text,
                 reader(child, read), container_.name.text);
-    if (auto writer = scope_.firstWriter(read.key)) {
+    if (parent_keys_ && parent_keys_->contains(read.scope_name->text)) {
+      noteParentHasKey(read);
+    } else if (auto writer = scope_.firstWriter(read.key)) {
       diags_.note(
           writer->second->scope_name->loc,
           fmt::format("`{}` writes it here", childName(module_, container_, writer->first)));

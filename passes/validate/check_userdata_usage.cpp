@@ -4,9 +4,12 @@
 //                           scope replaces with a different value when the container is built,
 //                           before any state can see it (the container's entries come first,
 //                           then each child's in order)
-//   * unused-userdata-key   (off by default: -Wunused-userdata-key) a key set in a scope, by a
+//   * unused-userdata-key   (-Wno-unused-userdata-key silences it) a key set in a scope, by a
 //                           `userdata` entry or a child's output key, that no child reads and
-//                           the container does not output; reported at its first definition
+//                           the container does not output; reported at its first definition.
+//                           Not checked in a scope with a leaf that declares no `input_keys`
+//                           (its template may read any key); the keys written in the
+//                           script's root scope are its results.
 #include <string>
 #include <vector>
 
@@ -41,14 +44,34 @@ class UsageChecker {
   }
 
   void reportUnused() {
+    if (hasUnknownReader()) return;
     std::vector<uint8_t> read(scope_.keyCount(), 0);
     for (uint32_t child = 0; child < scope_.childCount(); ++child) {
       for (const KeyUse& use : scope_.reads(child)) read[use.key] = 1;
     }
     for (const KeyUse& use : scope_.exitReads()) read[use.key] = 1;
+    if (container_.kind == ir::StateKind::Base) markResults(read);
     for (const LiteralDef& def : scope_.literals()) reportOnce(def.key, def.arg->key, read);
     for (uint32_t child = 0; child < scope_.childCount(); ++child) {
       for (const KeyUse& use : scope_.writes(child)) reportOnce(use.key, *use.scope_name, read);
+    }
+  }
+
+  /// A leaf that declares no `input_keys` reads those its template declares, unseen here:
+  /// it may read any key of the scope.
+  bool hasUnknownReader() const {
+    for (ir::StateId id : container_.children) {
+      const ir::State& child = module_.state(id);
+      if (!ir::isContainer(child.kind) && child.input_keys.empty()) return true;
+    }
+    return false;
+  }
+
+  /// The keys the states of the script write are its results, which the program running it
+  /// reads (the final userdata): neither they nor their initial values are unused.
+  void markResults(std::vector<uint8_t>& read) const {
+    for (uint32_t child = 0; child < scope_.childCount(); ++child) {
+      for (const KeyUse& use : scope_.writes(child)) read[use.key] = 1;
     }
   }
 

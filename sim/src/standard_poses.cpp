@@ -1,4 +1,4 @@
-// Baxter's standard joint poses (values from shared/baxter/KINEMATICS.md §5).
+// Baxter's standard joint poses (the values of Rethink Robotics' published Baxter SDK poses).
 #include "smachac/sim/standard_poses.h"
 
 namespace smachac::sim {

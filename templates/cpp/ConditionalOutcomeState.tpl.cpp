@@ -12,7 +12,10 @@ extends:
 - State
 variables:
 - - outcomes:
-      description: The outcomes of the state.
+      description: >
+        The outcomes, checked in order. The state also ends with `default` when
+        no callback holds: list `default` (last) to give it a transition, as
+        lint checks transitions against the listed outcomes.
       type: list of str
 - - input_keys:
       description: The userdata keys the state reads.

@@ -1,7 +1,9 @@
 {% block meta %}
 name: SleepState
 description: >
-  Sleeps for `time` seconds (waking at once on preemption), then succeeds.
+  Sleeps for `time` seconds, then succeeds. Declared with `outcomes: [succeeded,
+  preempted]`, it wakes at once on a preempt request and returns `preempted` (as SMACH, a
+  state returns only the outcomes it declares).
   The state is rt::SleepState of the smachac runtime.
 language: C++
 framework: smachac runtime

@@ -1,7 +1,8 @@
 {% block meta %}
 name: Base
 description: >
-  The base template of a FlexBE behavior (peers.md §2): the behavior module
+  The base template of a FlexBE behavior, shaped as FlexBE's generator
+  writes it: the behavior module
   `<name>_sm.py` (header, imports, the Behavior class with __init__ and
   create(), the four [MANUAL] sections), then, each after a
   `#@smachac-file <path>` line that the target splits on, the module of the

@@ -15,7 +15,7 @@ input_keys: []
 output_keys: []
 outcomes: []
 {% endblock meta %}
-{#- Every macro writes Python in the shape the FlexBE editor parses back (peers.md §2.1):
+{#- Every macro writes Python in the shape the FlexBE editor parses back:
     each call is one line, strings go through `pyrepr`. -#}
 
 {# One value as Python: None stays None, a `!str` string is quoted, a backtick expression is
@@ -31,6 +31,22 @@ outcomes: []
 
 {% macro render_list(items) -%}
 [{{ items | map('pyrepr') | join(', ') }}]
+{%- endmacro %}
+
+{# The keyword arguments of a generated file state: its input keys (the ones it always reads
+   first), output keys (the script's and the callbacks'), and callbacks. #}
+{% macro file_state_args(own_keys, input_keys, output_keys, callbacks) -%}
+{%- set reads = own_keys | list -%}
+{%- for key in (input_keys if input_keys is defined else []) if key not in reads %}{% do reads.append(key) %}{% endfor -%}
+{%- set written = (output_keys if output_keys is defined else []) | list -%}
+{%- for key in (callbacks if callbacks is defined else {}) if key not in written %}{% do written.append(key) %}{% endfor -%}
+input_keys={{ render_list(reads) }}, output_keys={{ render_list(written) }}, callbacks={{ render_callbacks(callbacks if callbacks is defined else {}) }}
+{%- endmacro %}
+
+{# A state's callbacks as a dict literal, output key -> the value (a backtick lambda is bare);
+   Python keeps the script's order. #}
+{% macro render_callbacks(callbacks) -%}
+{{ '{' }}{% for key, callback in callbacks.items() %}{{ key | pyrepr }}: {{ render_value(callback) }}{% if not loop.last %}, {% endif %}{% endfor %}{{ '}' }}
 {%- endmacro %}
 
 {# The keyword arguments of a container constructor. #}
@@ -86,7 +102,7 @@ autonomy={{ '{' }}
 {%- endfor %}{{ '}' }}
 {%- endmacro %}
 
-{# remapping: input keys first, then output keys that are not inputs (peers.md §2.1). #}
+{# remapping: input keys first, then output keys that are not inputs, as FlexBE's generator writes it. #}
 {% macro render_remapping(input_keys, output_keys, remapping) -%}
 {% set keys = (input_keys or []) + ((output_keys or []) | reject('in', input_keys or []) | list) -%}
 {% set ns = namespace(items=[]) -%}

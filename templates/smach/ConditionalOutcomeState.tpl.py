@@ -12,7 +12,10 @@ extends:
 - State
 variables:
 - outcomes:
-    description: The outcomes, checked in order (`default` is added last).
+    description: >
+      The outcomes, checked in order. The state also ends with `default` when
+      no callback holds: list `default` (last) to give it a transition, as
+      lint checks transitions against the listed outcomes.
     type: list of str
 - callbacks:
     description: >

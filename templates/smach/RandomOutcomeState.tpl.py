@@ -33,8 +33,8 @@ outcomes:
 {% endblock meta %}
 {% from "Utils.tpl.py" import import_module, render_init_callbacks, render_execute_callbacks %}
 {% extends "State.tpl.py" %}
-{# A global on purpose: SMACHA exports it to the following states (smacha-behaviour.md §3.7),
-   and scripts written for SMACHA expect that. #}
+{# A global on purpose: SMACHA's template sets `callbacks` at the top level, so it reaches the
+   following states, and scripts written for SMACHA expect that. #}
 {% if callbacks is not defined %}
 {% set callbacks = {'outcome': '`lambda ud: random.choice(' + ((outcomes if outcomes is defined else ['succeeded']) | list | string) + ')`'} %}
 {% endif %}

@@ -1,6 +1,10 @@
 {% block meta %}
 name: SleepState
-description: A SMACH state that pauses the state machine for a number of seconds (rospy time).
+description: >
+  A SMACH state that pauses the state machine for a number of seconds (rospy time).
+  Declared with `outcomes: [succeeded, preempted]`, it wakes on a preempt request and
+  returns `preempted` (SMACH lets a state return only the outcomes it declares).
+  In a program without a ROS node (template Base) it sleeps in wall time.
 language: Python
 framework: SMACH
 type: State
@@ -18,7 +22,7 @@ output_keys: []
 outcomes:
 - succeeded
 {% endblock meta %}
-{% from "Utils.tpl.py" import import_module %}
+{% from "Utils.tpl.py" import import_module, render_outcomes %}
 {% extends "State.tpl.py" %}
 
 {% block imports %}
@@ -30,7 +34,8 @@ outcomes:
 {{ super() }}
 {% if 'class_SleepState' not in defined_headers %}
 class SleepState(smach.State):
-    """Sleeps for a fixed time, then succeeds."""
+    """Sleeps for a fixed time, then succeeds; with `preempted` among its outcomes it wakes
+    on a preempt request and returns `preempted`."""
 
     def __init__(self, time, input_keys=[], output_keys=[], callbacks=[], outcomes=['succeeded']):
         smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
@@ -38,7 +43,17 @@ class SleepState(smach.State):
         self._time = time
 
     def execute(self, userdata):
-        rospy.sleep(self._time)
+        if not rospy.rostime.is_rostime_initialized():
+            rospy.rostime.set_rostime_initialized(True)  # no ROS node: rospy's time is wall time
+        if 'preempted' not in self.get_registered_outcomes():
+            rospy.sleep(self._time)
+            return 'succeeded'
+        end = rospy.get_rostime() + rospy.Duration(self._time)
+        while rospy.get_rostime() < end:
+            if self.preempt_requested():
+                self.service_preempt()
+                return 'preempted'
+            rospy.sleep(min(0.01, (end - rospy.get_rostime()).to_sec()))
         return 'succeeded'
 {% do defined_headers.append('class_SleepState') %}
 {% endif %}
@@ -46,7 +61,8 @@ class SleepState(smach.State):
 
 {% block body %}
 smach.{{ parent_type }}.add({{ name | pyrepr }},
-                       SleepState({{ time }})
+                       SleepState({{ time }}
+{%- if 'preempted' in outcomes %}, {{ render_outcomes(outcomes) }}{% endif %})
 {%- if transitions is defined and parent_type != 'Concurrence' %},
 {{ render_transitions(transitions) }}
 {%- endif %}

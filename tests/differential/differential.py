@@ -12,7 +12,8 @@ userdata. Cases:
   * tests/differential/cases/*.yml: written for this test. `# TARGETS: smach cpp` limits the
     targets; `<case>.<target>.yml` beside a case replaces it for that target (an equivalent
     script, e.g. where a callback is target code); `# EXPECT: <outcome>` is the final outcome
-    every target must reach.
+    every target must reach; `# PREEMPT-AFTER: <seconds>` preempts the machine that long
+    after it starts, the way each target is preempted (targets.py).
   * examples/core/*.yml, and the golden scripts of tests/golden/{smach,flexbe} that take no
     template folder: compared on the targets that compile them (the others are listed with
     the reason). A script that draws a random outcome among several is not compared: Python's
@@ -51,6 +52,10 @@ class Case:
         listed = self.header.get("TARGETS")
         return tuple(listed.split()) if listed else ALL_TARGETS
 
+    def preempt_after(self):
+        seconds = self.header.get("PREEMPT-AFTER")
+        return float(seconds) if seconds else None
+
     def script_for(self, target):
         variant = self.script[:-len(".yml")] + "." + target + ".yml"
         return variant if os.path.exists(variant) else self.script
@@ -63,7 +68,7 @@ def header(path):
             if not line.startswith("#"):
                 break
             key, _, value = line[1:].strip().partition(":")
-            if key.isupper():
+            if key.replace("-", "").isupper():
                 fields[key] = value.strip()
     return fields
 
@@ -116,7 +121,8 @@ def differences(reference, other):
 
 def run_case(tools, case):
     """{target: Run} for every target of the case (C++ builds run in parallel elsewhere)."""
-    return {t: targets.RUNNERS[t](tools, case.name.replace("/", "__"), case.script_for(t))
+    return {t: targets.RUNNERS[t](tools, case.name.replace("/", "__"), case.script_for(t),
+                                  case.preempt_after())
             for t in case.targets()}
 
 

@@ -58,3 +58,24 @@ RULES[("cases/concurrence_ends_early", "flexbe")] = Known(EARLY_EXIT, [
     "'PAR/SLOW/STEP_1 -> succeeded', 'PAR/SLOW/STEP_2 -> succeeded', "
     "'PAR/SLOW/STEP_3 -> succeeded'], this ['PAR -> early', 'PAR/FAST -> done', "
     "'PAR/SLOW -> (no outcome)', 'PAR/SLOW/STEP_1 -> succeeded']"])
+
+# FlexBE's preempt command sets one flag for the whole behavior: from then on every state
+# returns `preempted` and every container leaves by it. SMACH 2.5 (and the C++ runtime) pass
+# the request to the running state, follow the outcome it returns, and pass a request it
+# ignored on to the next state (stdlib/runtime/README.md, "Preemption").
+PREEMPT = ("FlexBE ends the whole behavior `preempted` once preempted; SMACH follows the "
+           "outcome of the state that serviced the request")
+RULES.update({
+    ("cases/preempt_serviced", "flexbe"): Known(PREEMPT, [
+        "states: smach ['SLEEP -> preempted', 'RECOVER -> succeeded'], this "
+        "['SLEEP -> preempted']",
+        "outcome: smach recovered, this preempted"]),
+    ("cases/preempt_passed_on", "flexbe"): Known(PREEMPT, [
+        "states: smach ['STUBBORN -> succeeded', 'SLEEP -> preempted', 'RECOVER -> succeeded'], "
+        "this ['STUBBORN -> preempted']",
+        "outcome: smach recovered, this preempted"]),
+    ("cases/preempt_concurrence", "flexbe"): Known(PREEMPT, [
+        "states: smach ['PAR -> mixed', 'PAR/SLEEP -> preempted', 'PAR/STUBBORN -> succeeded'], "
+        "this ['PAR -> preempted', 'PAR/SLEEP -> preempted', 'PAR/STUBBORN -> preempted']",
+        "outcome: smach mixed, this preempted"]),
+})

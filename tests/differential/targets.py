@@ -1,13 +1,16 @@
 """Compiling one script for a target and running it on that target's real runtime.
 
 Each target gives back a Run: the trace events and the result (top outcome, final userdata)
-in the protocol of tests/ros/trace_protocol.py, or the reason it did not run.
+in the protocol of tests/ros/trace_protocol.py, or the reason it did not run. Given
+preempt_after (seconds), each target's own preempt request reaches the running machine then.
   smach   smachac -target=smach, then tests/ros/run_smach.py on the real SMACH
+          (preempt: request_preempt() on the top machine)
   flexbe  smachac -target=flexbe -flexbe-ros=1 into its behaviors package
           (tests/ros/flexbe_package.py), then tests/ros/run_flexbe.py on the real flexbe_core
-          (with the session's master)
+          (with the session's master; preempt: FlexBE's preempt command topic)
   cpp     smachac -target=cpp, c++ against the runtime library, then the program with
-          --seed=1 --trace=json --print-userdata (its JSON-lines trace read back)
+          --seed=1 --trace=json --print-userdata (its JSON-lines trace read back;
+          preempt: SIGINT, which the generated program turns into a preempt request)
 """
 import ast
 import json
@@ -88,17 +91,21 @@ def from_protocol(finished):
     return Run(events, result)
 
 
-def run_smach(tools, name, script):
+def preempt_flag(preempt_after):
+    return [] if preempt_after is None else ["--preempt-after", str(preempt_after)]
+
+
+def run_smach(tools, name, script, preempt_after=None):
     program = os.path.join(tools.work_dir, "smach", name + ".py")
     os.makedirs(os.path.dirname(program), exist_ok=True)
     problem = tools.compile(script, "smach", program)
     if problem:
         return Run(problem="smachac: " + problem)
-    argv = [PYTHON, os.path.join(ROS_DIR, "run_smach.py"), program]
+    argv = [PYTHON, os.path.join(ROS_DIR, "run_smach.py"), program, *preempt_flag(preempt_after)]
     return from_protocol(tools.session.run(argv, TIMEOUT))
 
 
-def run_flexbe(tools, name, script):
+def run_flexbe(tools, name, script, preempt_after=None):
     import flexbe_package
     try:
         package = flexbe_package.generate(tools.smachac, os.path.basename(script),
@@ -109,11 +116,12 @@ def run_flexbe(tools, name, script):
     env = dict(tools.session.env)
     for variable in ("PYTHONPATH", "ROS_PACKAGE_PATH"):
         env[variable] = package.workspace + os.pathsep + env[variable]
-    argv = [PYTHON, os.path.join(ROS_DIR, "run_flexbe.py"), package.top[0]]
+    argv = [PYTHON, os.path.join(ROS_DIR, "run_flexbe.py"), package.top[0],
+            *preempt_flag(preempt_after)]
     return from_protocol(tools.session.processes.run(argv, env, TIMEOUT, cwd=package.workspace))
 
 
-def run_cpp(tools, name, script):
+def run_cpp(tools, name, script, preempt_after=None):
     source = os.path.join(tools.work_dir, "cpp", name + ".cpp")
     os.makedirs(os.path.dirname(source), exist_ok=True)
     problem = tools.compile(script, "cpp", source)
@@ -126,7 +134,7 @@ def run_cpp(tools, name, script):
     if build.returncode != 0:
         return Run(problem="c++: " + first_error(build.stderr))
     finished = tools.session.run([program, "--seed=1", "--trace=json", "--print-userdata"],
-                                 TIMEOUT)
+                                 TIMEOUT, interrupt_after=preempt_after)
     return cpp_run(finished)
 
 

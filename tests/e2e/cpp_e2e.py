@@ -26,8 +26,8 @@ SMACH = os.path.join(ROOT, "tests", "golden", "smach")
 CPP = os.path.join(ROOT, "tests", "golden", "cpp")
 
 # Golden SMACH scripts that use only core templates and no Python code.
-SMACH_CASES = ["comments", "concurrence_userdata", "introspection_plain_base", "random_outcomes",
-               "state_keys_override", "userdata_levels"]
+SMACH_CASES = ["comments", "concurrence_userdata", "files", "introspection_plain_base",
+               "log_and_sleep", "random_outcomes", "state_keys_override", "userdata_levels"]
 # Why the other SMACH golden scripts are not built as C++.
 SKIPPED = {
     "callbacks": "custom template CallbacksFoo (Python) and Python lambdas",
@@ -36,7 +36,6 @@ SKIPPED = {
     "conditional_outcome": "Python lambda callbacks (C++ version: cpp/conditional.yml)",
     "custom_base": "custom Python base template",
     "custom_templates": "custom template Greeter (Python)",
-    "files": "DeleteFileState and WriteCSVFileState have no C++ runtime state",
     "nesting_end": "custom template ParamState (Python)",
     "nesting_start": "custom template ParamState (Python)",
     "nesting_whole": "custom template ParamState (Python)",

@@ -63,6 +63,70 @@ class ExitCodes(TempDirTest):
         self.assertIn("-target", r.stdout.replace("--target", "-target"))
 
 
+class CommandLine(TempDirTest):
+    def test_standard_input(self):
+        self.write("sub/greet.yml", "- G: {template: S, outcomes: [x]}\n")
+        script = VALID + "  - B: {script: sub/greet, transitions: {x: done}}\n"
+        r = subprocess.run([SMACHAC, "-target=ir", "-"], input=script, capture_output=True,
+                           text=True, cwd=self.dir, timeout=120)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("leaf B template=S", r.stdout)  # sub/greet.yml, found from the cwd
+        r = subprocess.run([SMACHAC, "lint", "-target=ir", "-"], input="name: t\n---\n",
+                           capture_output=True, text=True, timeout=120)
+        self.assertEqual(r.returncode, 1)
+        self.assertTrue(r.stderr.startswith("<stdin>:2:1: error: a second YAML document"),
+                        r.stderr)
+
+    def test_usage_names_the_program(self):
+        self.assertIn("Usage: smachac [OPTIONS]", run("--help").stdout)
+        for command in ("lint", "render", "help", "contain", "extract"):
+            with self.subTest(command=command):
+                self.assertIn(f"Usage: smachac {command} [OPTIONS]", run(command, "--help").stdout)
+
+    def test_lint_without_input(self):
+        r = run("lint")
+        self.assertEqual((r.returncode, r.stdout), (2, ""))
+        self.assertEqual(r.stderr,
+                         "smachac: error: lint: no input script (see `smachac lint --help`)\n")
+
+    def test_help_lists_the_warning_flags(self):
+        for args in (["--help"], ["lint", "--help"]):
+            with self.subTest(args=args):
+                text = run(*args).stdout
+                for flag in ("-Wno-<kind>", "-Werror=<kind>", "-Wall", "-Wextra", "-Weverything",
+                             "--list-warnings"):
+                    self.assertIn(flag, text)
+
+    def test_list_warnings(self):
+        for args in (["--list-warnings"], ["-list-warnings"], ["lint", "--list-warnings"]):
+            with self.subTest(args=args):
+                r = run(*args)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                lines = r.stdout.splitlines()
+                self.assertIn("unused-userdata-key                  warning (-Wall)", lines)
+                self.assertIn("unknown-transition-target            error, -Wno-error=<kind> "
+                              "makes it a warning", lines)
+
+    def test_warning_groups(self):
+        script = self.write("s.yml", "name: t\ntemplate: Base\noutcomes: [done]\n"
+                            "userdata: {u: 1, v: 2}\nstates:\n"
+                            "  - A: {template: S, input_keys: [v], transitions: {x: done}}\n")
+        self.assertIn("[unused-userdata-key]", run("lint", "-target=ir", script).stderr)
+        self.assertEqual(run("lint", "-target=ir", "-Wno-all", script).stderr, "")
+        r = run("lint", "-target=ir", "-Wno-all", "-Wextra", "-Werror", script)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("error: userdata key `u` is set but never read", r.stderr)
+        r = run("lint", "-Wunknown-root", script)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("did you mean one of `unknown-root-key`, `unknown-root-state`?", r.stderr)
+
+    def test_render_keeps_the_json_key_order(self):
+        self.write("Keys.tpl", "{% for k, v in d.items() %}{{ k }}={{ v }} {% endfor %}")
+        context = self.write("ctx.json", '{"d": {"zeta": 1, "alpha": 2, "mid": 3}}')
+        r = run("render", "Keys", "--context", context, "-I", self.dir)
+        self.assertEqual((r.returncode, r.stdout), (0, "zeta=1 alpha=2 mid=3 "), r.stderr)
+
+
 class AtomicOutput(TempDirTest):
     def test_failure_leaves_existing_file_untouched(self):
         out = self.write("out.ir", "previous contents\n")
@@ -106,9 +170,9 @@ class Limits(TempDirTest):
         fifo = os.path.join(self.dir, "pipe.yml")
         os.mkfifo(fifo)
         r = run("-target=ir", fifo)
-        self.assertEqual(r.returncode, 1)
+        self.assertEqual(r.returncode, 2)  # an I/O error
         self.assertEqual(r.stderr, f"smachac: error: cannot read `{fifo}`: it is not a regular "
-                                   "file [file-not-found]\n")
+                                   "file [unreadable-file]\n")
 
 
 class Determinism(TempDirTest):

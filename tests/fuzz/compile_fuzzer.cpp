@@ -34,8 +34,9 @@ void compileTo(const backends::Target& target, ir::Module module, SourceManager&
   passes::PassContext context{sources, diags, std::string(target.name)};
   passes::PipelineOptions pipeline;
   pipeline.optimize = optimize;
-  if (passes::runPipeline(module, context, pipeline) &&
-      backends::checkTemplates(module, target.name, {}, diags)) {
+  bool passes_ok = passes::runPipeline(module, context, pipeline);
+  bool templates_ok = backends::checkTemplates(module, target.name, {}, diags);
+  if (passes_ok && templates_ok) {
     backends::EmitOptions options;
     backends::EmitContext emit{sources, diags, options};
     target.emit(module, emit);

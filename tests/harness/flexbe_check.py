@@ -4,7 +4,7 @@
   flexbe_check.py compile <golden dir>    every .py file of every expected *.flexbe.py
                                           compiles (py_compile, this interpreter), and every
                                           behavior module matches the FlexBE editor's parse
-                                          patterns (peers.md §2.1)
+                                          patterns
   flexbe_check.py manual <smachac> <case> regenerating over an existing behavior keeps the
                                           [MANUAL_*] sections byte for byte
 """

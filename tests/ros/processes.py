@@ -68,14 +68,19 @@ class Processes:
         self.running.append(process)
         return process
 
-    def run(self, argv, env, timeout, cwd=None):
-        """Runs a process to its end; on timeout it is stopped and reported, never raised."""
+    def run(self, argv, env, timeout, cwd=None, interrupt_after=None):
+        """Runs a process to its end; on timeout it is stopped and reported, never raised.
+        With interrupt_after, the process gets one SIGINT that many seconds after its start."""
         began = time.monotonic()
         process = subprocess.Popen(argv, env=env, cwd=cwd, stdin=subprocess.DEVNULL,
                                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                                    errors="replace", start_new_session=True,
                                    preexec_fn=_die_with_parent)
         self.running.append(process)
+        interrupt = None
+        if interrupt_after is not None:
+            interrupt = threading.Timer(interrupt_after, _interrupt, (process,))
+            interrupt.start()
         timed_out = False
         try:
             stdout, stderr = process.communicate(timeout=timeout)
@@ -83,6 +88,9 @@ class Processes:
             timed_out = True
             self.stop(process)
             stdout, stderr = process.communicate()
+        finally:
+            if interrupt is not None:
+                interrupt.cancel()
         if process in self.running:  # stop() has removed a process that timed out
             self.running.remove(process)
         return Finished(process.returncode, stdout, stderr, timed_out, time.monotonic() - began)
@@ -103,6 +111,11 @@ class Processes:
     def stop_all(self):
         for process in reversed(list(self.running)):
             self.stop(process)
+
+
+def _interrupt(process):
+    if process.poll() is None:
+        process.send_signal(signal.SIGINT)
 
 
 def _signal_group(process, signum):

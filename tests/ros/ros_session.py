@@ -130,8 +130,9 @@ class RosSession:
     def stop(self, process):
         self.processes.stop(process)
 
-    def run(self, argv, timeout, cwd=None):
-        return self.processes.run(argv, self.env, timeout, cwd=cwd or self.work_dir)
+    def run(self, argv, timeout, cwd=None, interrupt_after=None):
+        return self.processes.run(argv, self.env, timeout, cwd=cwd or self.work_dir,
+                                  interrupt_after=interrupt_after)
 
 
 def read(path):

@@ -4,6 +4,7 @@ flexbe_testing runs behaviors, and reports what happened in the trace protocol o
 trace_protocol.py.
 
   run_flexbe.py BEHAVIOR [--param NAME=VALUE ...] [--seed N] [--autonomy LEVEL]
+                [--preempt-after SECONDS]
 
 BEHAVIOR is the behavior's name in its manifest. As flexbe_onboard does, flexbe_core's
 BehaviorLibrary finds it among the packages on ROS_PACKAGE_PATH that export
@@ -27,12 +28,17 @@ and confirming the requested outcome. Before running, the structure message that
 the operator's mirror is built once (it needs a transition and an autonomy level for every
 outcome of every state). A state that raises makes FlexBE keep it active for the operator;
 headless, that is reported as an error (exit 1) instead of waiting for ever.
+
+With --preempt-after, FlexBE's preempt command (an Empty message on flexbe/command/preempt,
+which every FlexBE state machine listens to) is published that many seconds after the
+behavior starts.
 """
 import argparse
 import json
 import random
 import os
 import sys
+import threading
 import time
 import traceback
 
@@ -202,6 +208,14 @@ def prepared(args, operator):
     return interface, behavior
 
 
+def preempt_later(seconds):
+    from std_msgs.msg import Empty
+    command = rospy.Publisher("flexbe/command/preempt", Empty, queue_size=1, latch=True)
+    timer = threading.Timer(seconds, command.publish, (Empty(),))
+    timer.daemon = True
+    timer.start()
+
+
 def run(args):
     from flexbe_core.core.user_data import UserData
     operator = Operator() if args.autonomy != TESTING_AUTONOMY else None
@@ -214,6 +228,8 @@ def run(args):
         if error is not None:
             raise BehaviorError("a state raised %s: %s" % (type(error).__name__, error))
 
+    if args.preempt_after is not None:
+        preempt_later(args.preempt_after)
     outcome = interface.execute(userdata, spin_cb=check_tick)
     if outcome is None:
         raise BehaviorError("stopped before the behavior returned an outcome")
@@ -226,6 +242,7 @@ def main():
     parser.add_argument("--param", action="append", default=[], metavar="NAME=VALUE")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--autonomy", type=int, default=TESTING_AUTONOMY)
+    parser.add_argument("--preempt-after", type=float, default=None)
     args = parser.parse_args()
     rospy.init_node("smachac_flexbe_run_%d" % os.getpid())
     from flexbe_core import Logger

@@ -1,5 +1,6 @@
-// Shared fixtures of the physical simulation tests: the scene of shared/baxter/EXPERIMENTS.md
-// (table, 5 cm blocks, demo poses in the base frame) and small geometric helpers.
+// Shared fixtures of the physical simulation tests: the scene of the paper's experiments
+// (sim/models/scene.xml: table, 5 cm blocks, demo poses in the base frame) and small geometric
+// helpers.
 #pragma once
 
 #include <memory>

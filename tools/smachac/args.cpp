@@ -8,14 +8,12 @@
 namespace smachac::driver {
 namespace {
 
-constexpr std::array<std::string_view, 19> kLongOptions = {
-    "target",        "fsyntax-only",   "fdiagnostics-format",
-    "list-passes",   "print-ir-after", "disable-pass",
-    "emit",          "flexbe-ros",     "sub",
-    "sup",           "version",        "help",
-    "context",       "block",          "builtin-set",
-    "list-targets",  "no-ansi",        "skip-block",
-    "default-target"};
+constexpr std::array<std::string_view, 20> kLongOptions = {
+    // the driver's options
+    "target", "fsyntax-only", "fdiagnostics-format", "list-passes", "print-ir-after",
+    "disable-pass", "emit", "flexbe-ros", "version", "help", "list-targets", "list-warnings",
+    // the subcommands' options
+    "sub", "sup", "context", "block", "builtin-set", "no-ansi", "skip-block", "default-target"};
 
 bool isLongOption(std::string_view arg) {
   if (arg.size() < 3 || arg[0] != '-' || arg[1] == '-') return false;

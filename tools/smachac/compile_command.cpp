@@ -13,6 +13,7 @@
 #include "tools/smachac/library_output.h"
 #include "tools/smachac/output.h"
 #include "tools/smachac/session.h"
+#include "tools/smachac/warning_help.h"
 
 namespace smachac::driver {
 namespace {
@@ -27,6 +28,7 @@ struct CompileOptions {
   bool comments = false;
   bool introspection = false;
   bool list_targets = false;
+  bool list_warnings = false;
   int flexbe_ros = 2;
 };
 
@@ -38,12 +40,21 @@ std::string targetNames() {
   return names;
 }
 
+/// What compile and lint share: the inputs, the -W help and --list-warnings.
+void addScriptOptions(CLI::App& app, CompileOptions& o) {
+  app.add_option("inputs", o.inputs, "script files (`-`: standard input)")->type_name("SCRIPT");
+  app.add_flag("--list-warnings", o.list_warnings,
+               "list the diagnostic kinds, their defaults and groups, and exit");
+  app.footer(warningFlagsHelp());
+}
+
 void setUp(CLI::App& app, CompileOptions& o) {
+  app.name("smachac");
   app.description(
       "smachac: a compiler for SMACHA state-machine scripts.\n"
       "Subcommands: lint, render, help, contain, extract (run `smachac <subcommand> --help`).");
   app.set_version_flag("--version", fmt::format("smachac {}", kVersion));
-  app.add_option("inputs", o.inputs, "script files")->type_name("SCRIPT");
+  addScriptOptions(app, o);
   app.add_option("--target", o.common.target, "output target: " + targetNames());
   app.add_option("-o,--output", o.output, "output file (default: standard output)");
   app.add_option("--emit", o.emit,
@@ -72,7 +83,7 @@ int checkOnly(Session& session, const std::vector<std::string>& inputs) {
   bool ok = true;
   for (const std::string& input : inputs) ok = session.compile(input).has_value() && ok;
   session.printDiagnostics();
-  return ok && !session.diags().hasErrors() ? kExitOk : kExitInputError;
+  return ok && !session.diags().hasErrors() ? kExitOk : session.failureExitCode();
 }
 
 /// The -emit check: the C++ target emits a `program` or a `library`; others take no -emit.
@@ -138,7 +149,7 @@ int emit(Session& session, const CompileOptions& o, const backends::Target& targ
     files = target.emit(*module, context);
   }
   session.printDiagnostics();
-  if (!files || session.diags().hasErrors()) return kExitInputError;
+  if (!files || session.diags().hasErrors()) return session.failureExitCode();
   if (!o.depfile.empty()) {
     if (std::optional<std::string> error = writeDepfile(
             o.depfile, depfile_target, *module, session.sources(), o.common.template_dirs)) {
@@ -167,6 +178,7 @@ int runCompile(const Args& raw_args) {
   setUp(app, o);
   if (std::optional<int> code = parseArgs(app, args)) return *code;
   if (o.common.list_passes) return printPassList(), kExitOk;
+  if (o.list_warnings) return printWarningList(), kExitOk;
   if (o.list_targets) {
     for (const backends::Target& t : backends::targets()) {
       std::cout << fmt::format("{:<10} {}\n", t.name, t.description);
@@ -174,6 +186,7 @@ int runCompile(const Args& raw_args) {
     return kExitOk;
   }
   if (o.inputs.empty()) return usageError("no input script (see `smachac --help`)");
+  o.common.sub_script_alone = o.syntax_only;
   Session session;
   if (std::optional<std::string> error = session.configure(warning_flags, o.common)) {
     return usageError(*error);
@@ -181,6 +194,9 @@ int runCompile(const Args& raw_args) {
   if (o.syntax_only) return checkOnly(session, o.inputs);
   if (o.inputs.size() > 1) return usageError("one script at a time, unless -fsyntax-only");
   if (!o.depfile.empty() && o.output.empty()) return usageError("--depfile needs -o");
+  if (!o.depfile.empty() && o.inputs.front() == kStandardInputPath) {
+    return usageError("--depfile needs a script file, not standard input");
+  }
   const backends::Target* target = backends::findTarget(o.common.target);
   if (!target) {
     return usageError(
@@ -197,12 +213,17 @@ int runCompile(const Args& raw_args) {
 int runLint(const Args& raw_args) {
   Args args = raw_args;
   std::vector<std::string> warning_flags = takeWarningFlags(args);
-  CLI::App app{"smachac lint: check scripts (parse and every pass) and write nothing"};
+  CLI::App app{"smachac lint: check scripts (parse and every pass) and write nothing",
+               "smachac lint"};
   CompileOptions o;
-  app.add_option("inputs", o.inputs, "script files")->required()->type_name("SCRIPT");
+  addScriptOptions(app, o);
   app.add_option("--target", o.common.target, "target whose naming rules apply");
   addCommonOptions(app, o.common);
   if (std::optional<int> code = parseArgs(app, args)) return *code;
+  if (o.common.list_passes) return printPassList(), kExitOk;
+  if (o.list_warnings) return printWarningList(), kExitOk;
+  if (o.inputs.empty()) return usageError("lint: no input script (see `smachac lint --help`)");
+  o.common.sub_script_alone = true;
   Session session;
   if (std::optional<std::string> error = session.configure(warning_flags, o.common)) {
     return usageError(*error);

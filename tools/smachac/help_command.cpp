@@ -168,7 +168,7 @@ class MetaPrinter {
 };
 
 std::optional<int> parse(HelpOptions& o, const Args& args) {
-  CLI::App app{"smachac help: describe a template from its meta block"};
+  CLI::App app{"smachac help: describe a template from its meta block", "smachac help"};
   app.add_option("template", o.template_name, "template name (Foo) or file name (Foo.tpl.py)")
       ->required()
       ->type_name("TEMPLATE");

@@ -49,7 +49,7 @@ int reportError(const tmpl::TemplateError& e, const char* kind) {
 }
 
 std::optional<int> parse(RenderOptions& o, const Args& args) {
-  CLI::App app{"smachac render: render a template with a JSON or YAML context"};
+  CLI::App app{"smachac render: render a template with a JSON or YAML context", "smachac render"};
   app.add_option("template", o.templateArg, "template name (Foo, Foo.tpl.py) or file path")
       ->required()
       ->type_name("TEMPLATE");

@@ -8,7 +8,7 @@
 namespace smachac::driver {
 
 ScriptTool::ScriptTool(std::string command, const std::string& description)
-    : command_(std::move(command)), app_(description) {
+    : command_(std::move(command)), app_(description, "smachac " + command_) {
   app_.add_option("-S,--script-dir", common_.script_dirs,
                   "sub-script search directory, after the script's own (repeatable)")
       ->allow_extra_args(false);
@@ -36,7 +36,7 @@ std::optional<script_edit::ScriptView> ScriptTool::load(const std::string& path)
 
 std::optional<int> ScriptTool::report(bool ok) {
   session_.printDiagnostics();
-  if (!ok || session_.diags().hasErrors()) return kExitInputError;
+  if (!ok || session_.diags().hasErrors()) return session_.failureExitCode();
   return std::nullopt;
 }
 

@@ -4,13 +4,29 @@
 #include <fmt/core.h>
 
 #include <iostream>
+#include <iterator>
 
 #include "backends/template_check.h"
 #include "frontend/lower.h"
+#include "frontend/yaml_loader.h"
 #include "ir/printer.h"
 #include "passes/pipeline.h"
 
 namespace smachac::driver {
+namespace {
+
+/// The script on standard input, or nullopt (reported) when it is larger than a script may be.
+std::optional<std::string> readStandardInput(DiagnosticEmitter& diags) {
+  std::string text;
+  std::istreambuf_iterator<char> in(std::cin), end;
+  while (in != end && text.size() <= frontend::kMaxScriptBytes) text += *in++;
+  if (text.size() <= frontend::kMaxScriptBytes) return text;
+  diags.emit(DiagKind::FileTooLarge, SourceLoc{}, kStandardInputName,
+             fmt::format("more than {}", frontend::kMaxScriptBytes), frontend::kMaxScriptBytes);
+  return std::nullopt;
+}
+
+}  // namespace
 
 void addCommonOptions(CLI::App& app, CommonOptions& o) {
   app.add_option("-I,--template-dir", o.template_dirs,
@@ -51,9 +67,24 @@ std::optional<std::string> Session::configure(const std::vector<std::string>& wa
 }
 
 std::optional<ir::Module> Session::compile(const std::string& path) {
-  frontend::FrontendOptions frontend_options{options_.script_dirs};
-  std::optional<ir::Module> module =
-      frontend::lowerScript(path, frontend_options, sources_, *diags_);
+  size_t first = diags_->diagnostics().size();
+  frontend::IncludeSites include_sites;
+  std::optional<ir::Module> module = compileScript(path, include_sites);
+  frontend::noteInclusions(*diags_, first, include_sites);
+  return module;
+}
+
+std::optional<ir::Module> Session::compileScript(const std::string& path,
+                                                 frontend::IncludeSites& include_sites) {
+  frontend::FrontendOptions frontend_options{options_.script_dirs, &include_sites,
+                                             options_.sub_script_alone};
+  std::optional<ir::Module> module;
+  if (path != kStandardInputPath) {
+    module = frontend::lowerScript(path, frontend_options, sources_, *diags_);
+  } else if (std::optional<std::string> text = readStandardInput(*diags_)) {
+    module = frontend::lowerScriptText(std::string(kStandardInputName), std::move(*text),
+                                       frontend_options, sources_, *diags_);
+  }
   if (!module) return std::nullopt;
   passes::PassContext context{sources_, *diags_, options_.target};
   passes::PipelineOptions pipeline;
@@ -63,16 +94,24 @@ std::optional<ir::Module> Session::compile(const std::string& path) {
   pipeline.print_ir = [this](std::string_view pass, const ir::Module& m) {
     std::cerr << "; IR after " << pass << "\n" << ir::printModule(m, sources_);
   };
-  if (!passes::runPipeline(*module, context, pipeline)) return std::nullopt;
-  if (!backends::checkTemplates(*module, options_.target, options_.template_dirs, *diags_)) {
-    return std::nullopt;
-  }
+  // The template checks run after failed graph checks too: their errors are independent.
+  bool passes_ok = passes::runPipeline(*module, context, pipeline);
+  bool templates_ok =
+      backends::checkTemplates(*module, options_.target, options_.template_dirs, *diags_);
+  if (!passes_ok || !templates_ok) return std::nullopt;
   return module;
 }
 
 void Session::printDiagnostics() const {
   std::cerr.flush();
   smachac::printDiagnostics(std::cerr, diags_->diagnostics(), sources_, format_);
+}
+
+int Session::failureExitCode() const {
+  for (const Diagnostic& d : diags_->diagnostics()) {
+    if (d.severity == Severity::Error && isIoError(d.kind)) return kExitUsageError;
+  }
+  return kExitInputError;
 }
 
 std::optional<int> parseArgs(CLI::App& app, const Args& args) {

@@ -8,8 +8,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "frontend/include_notes.h"
 #include "ir/module.h"
 #include "ir/support/diagnostic_emitter.h"
 #include "ir/support/diagnostic_printer.h"
@@ -17,6 +19,11 @@
 #include "tools/smachac/commands.h"
 
 namespace smachac::driver {
+
+/// The input path that stands for standard input, and its name in diagnostics. Sub-scripts
+/// of a script read from standard input are searched in the working directory, then -S.
+inline constexpr std::string_view kStandardInputPath = "-";
+inline constexpr std::string_view kStandardInputName = "<stdin>";
 
 struct CommonOptions {
   std::vector<std::string> template_dirs;
@@ -27,6 +34,7 @@ struct CommonOptions {
   std::string print_ir_after;
   bool list_passes = false;
   bool optimize = false;
+  bool sub_script_alone = false;  ///< lint: check a sub-script on its own
 };
 
 /// Registers the common options on a CLI11 app.
@@ -38,17 +46,23 @@ class Session {
   std::optional<std::string> configure(const std::vector<std::string>& warning_flags,
                                        const CommonOptions& options);
 
-  /// Frontend + passes for one script; nullopt when it has errors.
+  /// Frontend + passes for one script (`-`: standard input); nullopt when it has errors.
   std::optional<ir::Module> compile(const std::string& path);
 
   /// Prints the diagnostics collected so far to stderr.
   void printDiagnostics() const;
+
+  /// The exit code of a run that failed: 2 when a file could not be read, else 1.
+  int failureExitCode() const;
 
   SourceManager& sources() { return sources_; }
   DiagnosticEmitter& diags() { return *diags_; }
   const CommonOptions& options() const { return options_; }
 
  private:
+  std::optional<ir::Module> compileScript(const std::string& path,
+                                          frontend::IncludeSites& include_sites);
+
   CommonOptions options_;
   DiagnosticFormat format_ = DiagnosticFormat::Text;
   SourceManager sources_;

@@ -91,27 +91,23 @@ void Concurrence::collectOwnProblems(std::vector<std::string>& problems) {
 std::string Concurrence::execute(UserData& parent) {
   ensureChecked();
   copyInputKeys(parent);
-  std::string outcome;
-  if (begin()) {
-    runAll();
-    outcome = finish();
-  } else {
-    outcome = finishPreempted();
-  }
+  begin();
+  runAll();
+  std::string outcome = finish();
   copyOutputKeys(parent);
   return outcome;
 }
 
-bool Concurrence::begin() {
+void Concurrence::begin() {
   std::lock_guard lock(mutex_);
-  if (preemptRequested()) return false;
   std::size_t n = children().size();
   run_->outcomes.assign(n, std::nullopt);
   run_->done.assign(n, 0);
   run_->errors.assign(n, nullptr);
   run_->decided.reset();
   run_->active = true;
-  return true;
+  // Asked before it started: every child starts preempted (SMACH would let them run on).
+  if (preemptRequested()) preemptRunningLocked();
 }
 
 void Concurrence::runAll() {
@@ -199,13 +195,16 @@ void Concurrence::requestPreempt() {
 std::string Concurrence::finish() {
   std::unique_lock lock(mutex_);
   run_->active = false;
+  bool children_serviced = true;
   for (Child& child : children()) {
-    if (child.state->preemptRequested()) child.state->recallPreempt();
+    if (!child.state->preemptRequested()) continue;
+    children_serviced = false;
+    child.state->recallPreempt();
   }
   for (const std::exception_ptr& error : run_->errors) {
     if (error) std::rethrow_exception(error);
   }
-  if (preemptRequested()) {
+  if (preemptRequested() && children_serviced) {
     lock.unlock();
     return finishPreempted();
   }

@@ -1,12 +1,15 @@
 // The core states of SMACHA's templates: callbacks, print, random and conditional outcomes,
-// sleep. Each follows its template's Python class (reference/smacha-behaviour.md §6).
+// sleep. Each follows the Python class of its SMACHA template.
 #include "smachac/runtime/core_states.h"
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <iostream>
 #include <mutex>
 #include <random>
+#include <thread>
 
 #include "smachac/runtime/errors.h"
 #include "text.h"
@@ -23,8 +26,8 @@ std::atomic<bool> g_seed_set{false};
 std::atomic<uint64_t> g_seed{0};
 
 /// Fills in the outcomes a template defaults to when the script gives none.
-StateSpec withDefaultOutcome(StateSpec spec) {
-  if (spec.outcomes.empty()) spec.outcomes.push_back(kSucceeded);
+StateSpec withDefaultOutcome(StateSpec spec, const char* outcome = kSucceeded) {
+  if (spec.outcomes.empty()) spec.outcomes.push_back(outcome);
   return spec;
 }
 
@@ -153,6 +156,19 @@ std::string ConditionalOutcomeState::execute(UserData& userdata) {
   return chosen;
 }
 
+// --- LogState --------------------------------------------------------------------------------
+
+LogState::LogState(std::string text, StateSpec spec, std::ostream* out)
+    : State(withDefaultOutcome(std::move(spec), "done")),
+      text_(std::move(text)),
+      out_(out != nullptr ? out : &std::cout) {}
+
+std::string LogState::execute(UserData& /*userdata*/) {
+  std::lock_guard lock(printMutex());
+  *out_ << text_ << "\n" << std::flush;
+  return outcomes().front();
+}
+
 // --- SleepState ------------------------------------------------------------------------------
 
 SleepState::SleepState(double seconds, StateSpec spec)
@@ -163,7 +179,12 @@ std::string SleepState::execute(UserData& /*userdata*/) {
     throw Error("SleepState " + backticked(displayName()) +
                 ": the time to sleep must be 0 seconds or more, not " + std::to_string(seconds_));
   }
-  if (waitForPreempt(std::chrono::duration<double>(seconds_))) {
+  std::chrono::duration<double> time(seconds_);
+  if (!hasOutcome(kPreempted)) {
+    std::this_thread::sleep_for(std::min(time, std::chrono::duration<double>(1e8)));
+    return kSucceeded;
+  }
+  if (waitForPreempt(time)) {
     servicePreempt();
     return std::string(kPreempted);
   }

@@ -25,6 +25,7 @@ RunResult run(State& root, UserDataStore* parent) {
   try {
     if (sink != nullptr) sink->write({.kind = TraceKind::Enter, .state = root.path()});
     std::string outcome = root.execute(view);
+    root.recallPreempt();  // a request nothing serviced ends with this run
     if (sink != nullptr) {
       sink->write({.kind = TraceKind::Exit,
                    .state = root.path(),

@@ -28,7 +28,30 @@ struct Options {
   std::optional<uint64_t> seed;
   bool quiet = false;
   bool print_userdata = false;
+  bool help = false;
 };
+
+constexpr std::string_view kUsage =
+    " [--trace=json|log] [--trace-file=PATH] [--seed=N] [--quiet] [--print-userdata] [--help]\n";
+
+constexpr std::string_view kHelp =
+    R"(Runs the state machine this program was generated from and prints its outcome.
+
+  --trace=json|log    trace every state entered and left, each transition and preempt
+                      request on standard error, as JSON lines or readable lines
+                      (also from the environment: SMACHAC_TRACE=json|log)
+  --trace-file=PATH   also write the trace to PATH, as JSON lines
+  --seed=N            seed RandomOutcomeState's choices: one seed gives the same choices
+                      on every machine
+  --quiet             do not print `outcome: <outcome>`
+  --print-userdata    print the top machine's final userdata, as a Python dict
+  -h, --help          print this help
+
+The first SIGINT or SIGTERM asks the machine to preempt, by SMACH's rules: the running
+state decides whether it stops; a second one ends the program at once.
+Exit status: 0 when the machine returned an outcome, 1 when a state failed, 2 on a bad
+flag or an unwritable trace file.
+)";
 
 /// Parses the flags; returns an error message on a bad one.
 std::optional<std::string> parseFlags(int argc, char** argv, Options& options) {
@@ -48,6 +71,8 @@ std::optional<std::string> parseFlags(int argc, char** argv, Options& options) {
       options.quiet = true;
     } else if (arg == "--print-userdata") {
       options.print_userdata = true;
+    } else if (arg == "--help" || arg == "-h") {
+      options.help = true;
     } else {
       return "unknown flag `" + std::string(arg) + "`";
     }
@@ -133,12 +158,14 @@ std::string finalUserdata(const State& root) {
 
 int runMain(State& root, int argc, char** argv) {
   Options options;
+  const char* program = argc > 0 ? argv[0] : "machine";
   if (std::optional<std::string> error = parseFlags(argc, argv, options)) {
-    std::cerr << "error: " << *error << "\n"
-              << "usage: " << (argc > 0 ? argv[0] : "machine")
-              << " [--trace=json|log] [--trace-file=PATH] [--seed=N] [--quiet]"
-                 " [--print-userdata]\n";
+    std::cerr << "error: " << *error << "\nusage: " << program << kUsage;
     return 2;
+  }
+  if (options.help) {
+    std::cout << "usage: " << program << kUsage << kHelp;
+    return 0;
   }
   if (!attachSinks(root, options)) {
     std::cerr << "error: cannot write trace file `" << options.trace_file << "`\n";

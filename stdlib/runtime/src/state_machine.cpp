@@ -1,8 +1,11 @@
 // StateMachine: the consistency check that resolves transitions to indices, and the run loop.
 //
-// Preemption: requestPreempt() sets the flag and forwards it to the running child under
-// mutex_; the loop checks the flag under the same lock before starting a child and after it
-// returns, so a request is never lost between children, and stops with `preempted`.
+// Preemption follows SMACH 2.5's StateMachine (README.md, "Preemption"): a request sets the
+// machine's flag and is passed to the current child. The child's outcome is followed as
+// usual. Before the next child starts, a request the last child serviced (its flag is clear)
+// is done with; one it ignored is taken back from it and passed on to the next child. At a
+// terminal outcome the machine services its own request when its last child did. mutex_
+// guards current_ and preempted_ against requestPreempt() from other threads.
 #include "smachac/runtime/state_machine.h"
 
 #include "smachac/runtime/errors.h"
@@ -71,50 +74,68 @@ std::string StateMachine::execute(UserData& parent) {
 
 std::string StateMachine::runFrom(std::size_t index) {
   for (;;) {
-    if (!enterChild(static_cast<int>(index))) return finishPreempted();
+    enterChild(static_cast<int>(index));
     std::string outcome;
     try {
       outcome = runChild(children()[index]);
     } catch (...) {
-      leaveChild(index);
+      finishRun(index);
       throw;
     }
-    if (leaveChild(index)) return finishPreempted();
     Target target = resolve(index, outcome);
     emitTransition(index, outcome, target);
-    if (target < 0) return outcomes()[static_cast<std::size_t>(~target)];
+    if (target < 0) {
+      finishRun(index);
+      return outcomes()[static_cast<std::size_t>(~target)];
+    }
     index = static_cast<std::size_t>(target);
   }
 }
 
-bool StateMachine::enterChild(int index) {
+void StateMachine::enterChild(int index) {
   std::lock_guard lock(mutex_);
-  if (preemptRequested()) return false;
   current_ = index;
-  return true;
+  if (!preemptRequested()) return;
+  if (preempted_ >= 0 && !childAt(preempted_).preemptRequested()) {
+    State::servicePreempt();  // the last preempted child serviced the request
+    preempted_ = -1;
+  } else {
+    preemptCurrentLocked();  // not yet passed to a child, or ignored by the last one
+  }
 }
 
-bool StateMachine::leaveChild(std::size_t index) {
+void StateMachine::finishRun(std::size_t last) {
   std::lock_guard lock(mutex_);
+  if (preemptRequested() && preempted_ >= 0 && !children()[last].state->preemptRequested()) {
+    State::servicePreempt();
+  }
+  // A request the last preempted child ignored must not preempt it on the next run.
+  if (preempted_ >= 0) childAt(preempted_).recallPreempt();
+  preempted_ = -1;
   current_ = -1;
-  State& child = *children()[index].state;
-  if (child.preemptRequested()) child.recallPreempt();
-  return preemptRequested();
 }
 
 void StateMachine::requestPreempt() {
   std::lock_guard lock(mutex_);
   State::requestPreempt();
-  if (current_ >= 0) children()[static_cast<std::size_t>(current_)].state->requestPreempt();
+  if (current_ >= 0) preemptCurrentLocked();
+}
+
+void StateMachine::preemptCurrentLocked() {
+  if (preempted_ == current_) return;
+  if (preempted_ >= 0) childAt(preempted_).recallPreempt();
+  preempted_ = current_;
+  childAt(current_).requestPreempt();
+}
+
+State& StateMachine::childAt(int index) {
+  return *children()[static_cast<std::size_t>(index)].state;
 }
 
 StateMachine::Target StateMachine::resolve(std::size_t index, const std::string& outcome) const {
   const State& state = *children()[index].state;
   int position = indexIn(state.outcomes(), outcome);
   if (position >= 0) return table_[index][static_cast<std::size_t>(position)];
-  // An undeclared `preempted` (the child was preempted on its own) falls through.
-  int own = indexIn(outcomes(), outcome);
-  if (outcome == kPreempted && own >= 0) return ~own;
   std::string message = "state " + backticked(state.displayName()) + " returned outcome " +
                         backticked(outcome) + ", which is not one of its outcomes";
   fail(state, message);

@@ -48,6 +48,34 @@ TEST_CASE("warning options") {
         "unknown diagnostic kind `unknown-rot-key` in -W flag; did you mean `unknown-root-key`?");
 }
 
+TEST_CASE("warning groups: -Wall, -Wextra, -Weverything") {
+  smachac::WarningOptions options;
+  CHECK_FALSE(options.apply("-Wno-unknown-root-key").has_value());
+  CHECK_FALSE(options.apply("-Wall").has_value());  // the later flag wins, as in clang
+  CHECK(options.severityOf(DiagKind::UnknownRootKey) == Severity::Warning);
+  CHECK_FALSE(options.apply("-Wno-everything").has_value());
+  CHECK(options.severityOf(DiagKind::UnusedUserdataKey) == Severity::Ignored);
+  CHECK(options.severityOf(DiagKind::DuplicateKey) == Severity::Error);
+  CHECK_FALSE(options.apply("-Werror=extra").has_value());
+  CHECK(options.severityOf(DiagKind::UnusedUserdataKey) == Severity::Error);
+  CHECK(options.severityOf(DiagKind::UnknownTransitionTarget) == Severity::Error);
+  CHECK(smachac::warningGroupNames() == std::vector<std::string>{"all", "extra", "everything"});
+}
+
+TEST_CASE("an unknown -W name lists the close ones") {
+  smachac::WarningOptions options;
+  CHECK(*options.apply("-Wal") == "unknown diagnostic kind `al` in -W flag; did you mean `all`?");
+  CHECK(*options.apply("-Wno-unknown-root-sta") ==
+        "unknown diagnostic kind `unknown-root-sta` in -W flag; did you mean one of "
+        "`unknown-root-state`, `unknown-root-key`?");
+  CHECK(*options.apply("-Wunknown-root") ==
+        "unknown diagnostic kind `unknown-root` in -W flag; did you mean one of "
+        "`unknown-root-key`, `unknown-root-state`?");
+  CHECK(*options.apply("-Wwhatever-this-is") ==
+        "unknown diagnostic kind `whatever-this-is` in -W flag; `smachac --list-warnings` lists "
+        "them");
+}
+
 TEST_CASE("silenced diagnostics drop their notes") {
   smachac::WarningOptions options;
   CHECK_FALSE(options.apply("-Wno-unknown-root-key").has_value());

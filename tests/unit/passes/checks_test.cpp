@@ -115,6 +115,15 @@ TEST_CASE("check-concurrence: entries SMACH 2.5 never chooses") {
   CHECK(c->located() == std::vector<std::string>{"10:9 shadowed-outcome-map-entry"});
 }
 
+TEST_CASE("check-concurrence: `preempted` is an outcome a preempted concurrence ends with") {
+  // SMACH 2.5 returns it when every child serviced the preempt request; `d` stays unused.
+  std::string script = concurrence("        a: {X: ok}\n        b: {X: no}\n");
+  script.replace(script.find("[a, b, d]"), 9, "[a, b, preempted, d]");
+  script.replace(script.find("d: done}"), 8, "d: done, preempted: done}");
+  auto c = check(script, checkConcurrence);
+  CHECK(c->kinds().empty());
+}
+
 TEST_CASE("check-reachability: no cascade from a container that never finishes") {
   auto c = check(R"(
 name: t
@@ -190,18 +199,30 @@ states:
   CHECK(c->kinds() == Kinds{"maybe-undefined-userdata-key"});
 }
 
-TEST_CASE("check-userdata-usage: unused keys only when asked for") {
+TEST_CASE("check-userdata-usage: unused keys, on by default") {
+  // x is read by nobody; y, written in the root scope, is a result of the script; z, written
+  // in a container that does not output it, is unused.
   const char* script = R"(
 name: t
 template: Base
 outcomes: [done]
-userdata: {x: 1}
+userdata: {x: 1, w: 2}
 states:
-  - A: {template: T, outcomes: [ok], output_keys: [y], transitions: {ok: done}}
+  - A: {template: T, outcomes: [ok], input_keys: [w], output_keys: [y], transitions: {ok: S}}
+  - S:
+      template: StateMachine
+      outcomes: [fin]
+      transitions: {fin: done}
+      states:
+        - B: {template: T, outcomes: [ok], input_keys: [v], output_keys: [z], transitions: {ok: fin}}
 )";
-  CHECK(check(script, checkUserdataUsage)->kinds().empty());
-  CHECK(check(script, checkUserdataUsage, "ir", {"-Wunused-userdata-key"})->kinds() ==
+  CHECK(check(script, checkUserdataUsage)->kinds() ==
         Kinds{"unused-userdata-key", "unused-userdata-key"});
+  CHECK(check(script, checkUserdataUsage, "ir", {"-Wno-unused-userdata-key"})->kinds().empty());
+  // A leaf without `input_keys` may read any key (its template declares them): no report.
+  std::string unknown_reader = script;
+  unknown_reader.replace(unknown_reader.find("input_keys: [w], "), 17, "");
+  CHECK(check(unknown_reader, checkUserdataUsage)->kinds() == Kinds{"unused-userdata-key"});
 }
 
 TEST_CASE("check-userdata-types: int and float, null and expressions are compatible") {

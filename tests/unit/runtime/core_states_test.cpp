@@ -120,15 +120,23 @@ TEST_CASE("ConditionalOutcomeState skips a condition that is not set, as SMACH d
   CHECK_FALSE(sm.userdata().contains("first"));
 }
 
-TEST_CASE("SleepState sleeps, or returns `preempted` at once when asked") {
+TEST_CASE("SleepState sleeps, or returns `preempted` at once when asked and it declares it") {
   rt::SleepState nap(0.01);
   auto start = std::chrono::steady_clock::now();
   CHECK(rt::run(nap).outcome == "succeeded");
   CHECK(rt::testing::since(start) >= 0.01);
-  rt::SleepState long_nap(60);
+  rt::SleepState long_nap(60, {.outcomes = {"succeeded", "preempted"}});
   long_nap.requestPreempt();
   CHECK(rt::run(long_nap).outcome == "preempted");
   CHECK_FALSE(long_nap.preemptRequested());
+}
+
+TEST_CASE("SleepState without `preempted` sleeps its time and succeeds, as in SMACH") {
+  rt::SleepState nap(0.05);
+  nap.requestPreempt();
+  auto start = std::chrono::steady_clock::now();
+  CHECK(rt::run(nap).outcome == "succeeded");
+  CHECK(rt::testing::since(start) >= 0.05);
 }
 
 TEST_CASE("SleepState fails on a negative or NaN time, naming the state") {
@@ -142,7 +150,8 @@ TEST_CASE("SleepState fails on a negative or NaN time, naming the state") {
       std::string::npos);
   rt::SleepState backwards(-1.0);
   CHECK(rt::run(backwards).error.find("not -1.000000") != std::string::npos);
-  rt::SleepState forever(std::numeric_limits<double>::infinity());  // until preempted
+  rt::SleepState forever(std::numeric_limits<double>::infinity(),  // until preempted
+                         {.outcomes = {"succeeded", "preempted"}});
   forever.requestPreempt();
   CHECK(rt::run(forever).outcome == "preempted");
 }

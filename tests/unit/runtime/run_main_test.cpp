@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "helpers.h"
@@ -69,6 +70,23 @@ TEST_CASE("bad flags are usage errors") {
   CHECK(callMain({"machine", "--trace=xml"}) == 2);
   CHECK(callMain({"machine", "--seed=x1"}) == 2);
   CHECK(callMain({"machine", "--trace-file=/nonexistent/dir/trace"}) == 2);
+}
+
+TEST_CASE("--help documents every flag and exits with 0 without running the machine") {
+  std::stringstream captured;
+  std::streambuf* previous = std::cout.rdbuf(captured.rdbuf());
+  int status = callMain({"machine", "--help"});
+  std::cout.rdbuf(previous);
+  CHECK(status == 0);
+  const std::string help = captured.str();
+  CHECK(
+      help.starts_with("usage: machine [--trace=json|log] [--trace-file=PATH] [--seed=N] "
+                       "[--quiet] [--print-userdata] [--help]\n"));
+  for (const char* flag : {"--trace=json|log  ", "--trace-file=PATH  ", "--seed=N  ", "--quiet  ",
+                           "--print-userdata  ", "-h, --help  ", "SIGINT", "Exit status"}) {
+    CHECK_MESSAGE(help.find(flag) != std::string::npos, flag);
+  }
+  CHECK(help.find("outcome: succeeded") == std::string::npos);  // the machine did not run
 }
 
 TEST_CASE("a failing machine exits with 1") {

@@ -1,4 +1,4 @@
-// Baxter's standard joint poses (shared/baxter/KINEMATICS.md §5): neutral, untuck (the
+// Baxter's standard joint poses, as Rethink Robotics' SDK publishes them: neutral, untuck (the
 // pick-and-place demo's start pose) and tuck, for either arm. The right arm mirrors the left:
 // s0, e0, w0 and w2 change sign.
 #pragma once

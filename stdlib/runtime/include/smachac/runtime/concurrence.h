@@ -14,7 +14,8 @@
 // With early_exit (the default), an entry decides as soon as it is satisfied and no entry that
 // could still be satisfied ranks above it: the children still running are preempted.
 // child_termination_cb runs after each child returns; returning true preempts the others.
-// A preempt request on the container reaches every running child; it then returns `preempted`.
+// A preempt request on the container reaches every running child; once all have returned it
+// returns `preempted` if none ignored the request, else its usual outcome (SMACH 2.5).
 #pragma once
 
 #include <concepts>
@@ -79,7 +80,7 @@ class Concurrence : public Container {
   struct Run;
 
   void addState(std::string label, std::unique_ptr<State> state, Remapping remapping);
-  bool begin();
+  void begin();
   void runAll();
   void runOne(std::size_t index);
   void childDone(std::size_t index, std::optional<std::string> outcome, std::exception_ptr error);

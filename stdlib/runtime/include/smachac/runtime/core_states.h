@@ -1,11 +1,14 @@
-// The reusable states behind SMACHA's core templates (reference/smacha-behaviour.md §6).
+// The reusable states behind SMACHA's core templates (each as its template's Python class).
 //
 //   CallbacksState           runs its callbacks, returns `succeeded`
 //   PrintUserdataState       prints `userdata.<key>: <value>` for each input key
 //   RandomOutcomeState       runs its callbacks, picks one of its outcomes (seedable)
 //   ConditionalOutcomeState  runs its callbacks, returns the first outcome whose key is set
 //                            and true, else `default`, and writes the choice to `outcome`
-//   SleepState               sleeps, waking at once on preemption (then returns `preempted`)
+//   LogState                 prints its text on a line of its own, returns `done` (FlexBE's
+//                            LogState)
+//   SleepState               sleeps; when it declares `preempted`, wakes at once on preemption
+//                            and returns it (SMACH allows only declared outcomes)
 //
 // A callback computes the value of one output key from the userdata: callbacks are keyed by
 // that output key, which the state declares for them, and run in the order given (the
@@ -78,6 +81,17 @@ class ConditionalOutcomeState : public State {
 
  private:
   Callbacks callbacks_;
+};
+
+class LogState : public State {
+ public:
+  /// Prints to `out` (nullptr: std::cout). Outcomes default to {done}.
+  explicit LogState(std::string text, StateSpec spec = {}, std::ostream* out = nullptr);
+  std::string execute(UserData& userdata) override;
+
+ private:
+  std::string text_;
+  std::ostream* out_;
 };
 
 class SleepState : public State {

@@ -4,7 +4,7 @@
 // Preemption is cooperative, as in SMACH: requestPreempt() (from any thread) sets a flag that
 // the running state polls with preemptRequested() or sleeps on with waitForPreempt(); a state
 // that honours it calls servicePreempt() and returns `preempted`. Containers forward requests
-// to their running children and always finish with `preempted` once asked (see README.md).
+// to their running children and follow SMACH 2.5's rules for the rest (see README.md).
 #pragma once
 
 #include <atomic>

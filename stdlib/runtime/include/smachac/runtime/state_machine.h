@@ -58,15 +58,18 @@ class StateMachine : public Container {
                 Remapping remapping);
   void resolveChild(std::size_t index, std::vector<std::string>& problems);
   std::string runFrom(std::size_t index);
-  bool enterChild(int index);
-  bool leaveChild(std::size_t index);
+  void enterChild(int index);
+  void finishRun(std::size_t last);
+  void preemptCurrentLocked();
+  State& childAt(int index);
   Target resolve(std::size_t index, const std::string& outcome) const;
   void emitTransition(std::size_t index, const std::string& outcome, Target target) const;
 
   std::vector<Transitions> transitions_;    ///< per child, as added
   std::vector<std::vector<Target>> table_;  ///< per child, per declared outcome
-  std::mutex mutex_;                        ///< guards current_ against requestPreempt
-  int current_ = -1;                        ///< running child, -1 between children
+  std::mutex mutex_;                        ///< guards current_, preempted_
+  int current_ = -1;                        ///< the child running or about to run, or -1
+  int preempted_ = -1;                      ///< the child last asked to preempt, or -1
 };
 
 }  // namespace smachac::runtime

@@ -1,10 +1,11 @@
-"""The README's tour shows what the files hold and what the commands print, and its
-pre-commit set-up works as written.
+"""The README's tour shows what the files hold and what the commands print, its shell
+sessions run as shown, and its pre-commit set-up works as written.
 
 A shown block may leave lines out where it has a line `...`: each run of lines between two
 `...` must appear in the real text as consecutive lines, in the order shown.
 """
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -12,6 +13,8 @@ import unittest
 
 SMACHAC = os.environ["SMACHAC"]
 ROOT = os.environ["SMACHAC_ROOT"]
+RUNTIME_LIBRARY = os.environ.get("SMACHAC_RUNTIME_LIBRARY", "")
+CXX = os.environ.get("SMACHAC_CXX", "c++")
 
 
 def readme_blocks():
@@ -62,6 +65,32 @@ def missing_from(shown, actual):
     return None
 
 
+TRACE_TIME = re.compile(r"^\[ *[0-9.]+\]")
+
+
+def commands(block):
+    """(command, the lines shown after it) for each `$ ` line of a session; a command may go
+    on over lines that end in a backslash."""
+    found = []
+    for line in block:
+        if line.startswith("$ "):
+            found.append([line[2:], []])
+        elif found and found[-1][0].endswith("\\"):
+            found[-1][0] = found[-1][0][:-1] + line.strip()
+        elif found:
+            found[-1][1].append(line)
+    return [(command, shown) for command, shown in found]
+
+
+def as_built(command):
+    """A README command with smachac, the runtime and its headers where this build has them."""
+    command = re.sub(r"^smachac ", SMACHAC + " ", command)
+    command = command.replace("build/stdlib/runtime/libsmachac_runtime.a", RUNTIME_LIBRARY)
+    command = command.replace("-I stdlib/runtime/include",
+                              "-I " + os.path.join(ROOT, "stdlib", "runtime", "include"))
+    return command.replace("c++ ", CXX + " ", 1) if command.startswith("c++ ") else command
+
+
 def smachac(*args):
     result = subprocess.run([SMACHAC, *args], cwd=ROOT, capture_output=True, text=True,
                             timeout=60)
@@ -94,6 +123,32 @@ class Tour(unittest.TestCase):
         actual = smachac("-target=smach", "examples/core/nesting.yml").splitlines()
         main = actual[next(i for i, l in enumerate(actual) if l.startswith("def main")):]
         self.assert_shown(shown[2:], main, "the SMACH output of examples/core/nesting.yml")
+
+    def test_mistakes_are_reported_as_shown(self):
+        self.run_session(block_starting("$ cat broken.yml"))
+
+    def test_the_cpp_counter_runs_as_shown(self):
+        self.run_session(block_starting("$ cat counter.yml"))
+
+    def test_render_prints_as_shown(self):
+        self.run_session(block_starting("$ cat Edges.tpl"))
+
+    def run_session(self, block):
+        """Runs a README shell session in a temporary folder: `$ cat FILE` writes the lines
+        shown after it; any other command runs (smachac, the compiler and the runtime as
+        built), and what it prints must show the lines after it (trace times aside)."""
+        with tempfile.TemporaryDirectory() as folder:
+            for command, shown in commands(block):
+                if command.startswith("cat "):
+                    with open(os.path.join(folder, command[4:]), "w", encoding="utf-8") as f:
+                        f.write("\n".join(shown) + "\n")
+                    continue
+                result = subprocess.run(as_built(command), shell=True, cwd=folder, text=True,
+                                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                        timeout=120)
+                actual = [TRACE_TIME.sub("[t]", l) for l in result.stdout.splitlines()]
+                self.assert_shown([TRACE_TIME.sub("[t]", l) for l in shown], actual,
+                                  "`%s`" % command)
 
     def test_an_excerpt_check_notices_a_changed_line(self):
         actual = ["a", "b", "c", "d"]

@@ -1,5 +1,5 @@
-// What a template's meta block declares about its variables (SMACHA's format, §7.5 of
-// smacha-behaviour.md): `variables` entries are `{var: {type, description}}` (required),
+// What a template's meta block declares about its variables (SMACHA's format):
+// `variables` entries are `{var: {type, description}}` (required),
 // `[{var: {...}}]` (optional), `[{a: ...}, {b: ...}]` (alternatives: one of them required) or
 // `{heading: [entries...]}` (a group).
 #pragma once

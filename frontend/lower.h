@@ -6,7 +6,7 @@
 //   state  ::= container {states, template, ...} | include {script, ...} | leaf {template, ...}
 //
 // Shorthands are expanded at root and state keys; params are inherited and lookups resolved
-// per state in document order (smacha-behaviour.md §2). The script's `params` (ignored by
+// per state in document order (as SMACHA does). The script's `params` (ignored by
 // SMACHA) and those of a sub-script's state are behavior parameters: their children inherit
 // them marked as such (Value::behavior_param), so that FlexBE can refer to them. Sub-scripts
 // are included with the caller's overrides; transitions are resolved to siblings or container

@@ -1,4 +1,4 @@
-// The parameters of a FlexBE behavior (peers.md §2.1–2.2): the `params` of the script's root,
+// The parameters of a FlexBE behavior: the `params` of the script's root,
 // or of the sub-script state an embedded behavior is made of. A key is a parameter when its
 // value is text, a number or a boolean (FlexBE's text, numeric and boolean parameter types)
 // and its name is a Python identifier that no attribute of flexbe_core's Behavior uses

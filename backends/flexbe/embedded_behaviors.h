@@ -1,4 +1,4 @@
-// Sub-scripts as embedded FlexBE behaviors (peers.md §2.1): a StateMachine included from a
+// Sub-scripts as embedded FlexBE behaviors: a StateMachine included from a
 // sub-script becomes a behavior of its own, which the including behavior declares in
 // `__init__` (`self.add_behavior(XSM, 'path')`) and adds with
 // `self.use_behavior(XSM, 'path', parameters={...})`. That is possible when the including

@@ -1,4 +1,4 @@
-// FlexBE's [MANUAL_*] sections (peers.md §2.1): the text between `# [MANUAL_X]` and
+// FlexBE's [MANUAL_*] sections: the text between `# [MANUAL_X]` and
 // `# [/MANUAL_X]` belongs to the user and survives regeneration byte for byte.
 #pragma once
 

@@ -1,4 +1,4 @@
-// SMACHA's code buffers (smacha-behaviour.md §3.1): the named places where the blocks rendered
+// SMACHA's code buffers: the named places where the blocks rendered
 // for each state collect before they flow up to the parent container and, at the root, into
 // the base template. Eleven buffers are lists of snippets; `header` and `header_userdata` are
 // keyed by the name of the container the snippets belong to. Later states' snippets go after

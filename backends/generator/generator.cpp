@@ -70,7 +70,7 @@ class Generator {
   }
 
   /// The base template's globals (defined_headers pre-seeded with its own imports, ...),
-  /// computed with every buffer empty (§3.2 step 3).
+  /// computed with every buffer empty.
   void seedFromBase(const std::string& base, const ir::State& root, Level& level) {
     tmpl::Value context = tmpl::Value::newDict();
     context.dict().setString("name", str(root.name.text));
@@ -113,7 +113,7 @@ class Generator {
   void processChildren(const ir::State& container, Level& level) {
     for (ir::StateId id : container.children) {
       const ir::State& state = module_.state(id);
-      // A sub-script call writes the caller's params into the level (§2.6 step 6).
+      // A sub-script call writes the caller's params into the level.
       if (!state.included_from.empty() && state.params) {
         level.vars.dict().setString("params", ctx_.converter.convert(*state.params));
       }
@@ -177,7 +177,7 @@ class Generator {
   }
 
   /// A container's code goes up in place of its children's for the buffers its template has
-  /// blocks for; the children's code goes up unchanged for the others (§3.4 step 8).
+  /// blocks for; the children's code goes up unchanged for the others.
   void propagate(const ir::State& state, const std::string& name, const BlockCode& code,
                  const Level& child, Level& level) {
     for (size_t b = 0; b < kBufferCount; ++b) {

@@ -1,4 +1,4 @@
-// SMACHA's generator (smacha-behaviour.md §3), driven from the IR and shared by every code
+// SMACHA's generator, driven from the IR and shared by every code
 // target: each state's template blocks are rendered in isolation into code buffers that flow
 // up to the parent container; containers render with their children's code; the base template
 // renders last with everything collected. A target supplies the template environment (its

@@ -1,4 +1,4 @@
-// The view model: what a template sees of an IR state (smacha-behaviour.md §3.3–3.5).
+// The view model: what a template sees of an IR state.
 //   class_name  the state's template name as written in the script
 //   name        the state's name;   uuid  its id (see state_uuid.h)
 //   outcomes, input_keys, output_keys             lists of names

@@ -1,8 +1,8 @@
 // SMACHA's templater operations on top of the template engine, with the caches SMACHA lacked:
 // script-level template names are resolved once, block lists computed once per template.
-//   renderBlocks  every block of a template rendered in isolation (smacha-behaviour.md §4.4)
-//   exports       the template's module variables minus those its `local_vars` lists (§4.5)
-//   renderBase    the whole base template, `meta` skipped, stripped (§4.7)
+//   renderBlocks  every block of a template rendered in isolation
+//   exports       the template's module variables minus those its `local_vars` lists
+//   renderBase    the whole base template, `meta` skipped, stripped
 // Blocks in `skip_blocks` (comment and introspection blocks without -c/-i) are absent from
 // every render, as SMACHA's SkipBlockExtension makes them. Errors propagate as TemplateError.
 #pragma once
@@ -42,7 +42,7 @@ class TemplateRunner {
   Exports exports(const std::string& name, const tmpl::Value& vars);
 
   /// The same with the blocks run too, as SMACHA's module pass does: how the base template
-  /// pre-seeds defined_headers with the imports its blocks write (§3.2 step 3).
+  /// pre-seeds defined_headers with the imports its blocks write.
   Exports exportsRunningBlocks(const std::string& name, const tmpl::Value& vars);
 
   /// The whole template rendered with `vars`, stripped.

@@ -1,5 +1,5 @@
 // Statement parsing: data and `{{ }}` into text/print statements, and every `{% %}` tag of the
-// supported Jinja2 subset (see reference/template-engine.md), with Jinja's end-tag rules.
+// supported Jinja2 subset (backends/tmpl/README.md), with Jinja's end-tag rules.
 #include "backends/tmpl/parser.h"
 
 #include <algorithm>

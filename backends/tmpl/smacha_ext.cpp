@@ -1,4 +1,4 @@
-// SMACHA's custom tests and filter (smacha-behaviour.md §5.1–5.3):
+// SMACHA's custom tests and filter:
 //   exptostr   — on each line, removes the first and the last backtick (re.sub('`(.*)`', r'\1'))
 //   expression — re.match('`.*`$', value): a one-line string wrapped in backticks
 //   not_string — true for lists, dicts, numbers (bools included), strings Python's float()

@@ -16,7 +16,7 @@ import subprocess
 import sys
 import tempfile
 
-# The editor's regexes (flexbe_webui/app/io/io_codeparser.js), as peers.md §2.1 lists them.
+# The regexes with which the FlexBE editor (flexbe_webui, io_codeparser.js) parses a behavior.
 PATTERNS = {
     "class line": r"^class \w+SM\(Behavior\):$",
     "__init__": r"^    def __init__\(self(, node)?\):$",

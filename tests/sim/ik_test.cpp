@@ -1,4 +1,4 @@
-// Ik: forward kinematics against KINEMATICS.md, the demo's poses for both arms, unreachable
+// Ik: forward kinematics against the published Baxter values, the demo's poses for both arms, unreachable
 // and invalid targets as results, joint limits, and the world left untouched.
 #include <doctest/doctest.h>
 
@@ -17,7 +17,7 @@ auto mirrored(const Vec3& v) -> Vec3 { return {v.x, -v.y, v.z}; }
 auto raised(const Vec3& v, double dz) -> Vec3 { return {v.x, v.y, v.z + dz}; }
 
 TEST_SUITE("sim_ik") {
-  TEST_CASE("forward kinematics of untuck and neutral match KINEMATICS.md") {
+  TEST_CASE("forward kinematics of untuck and neutral match the published Baxter values") {
     auto world = loadWorld();
     Ik ik(*world);
     for (Side side : {Side::kLeft, Side::kRight}) {

@@ -1,4 +1,4 @@
-// World: loading (and its failures), forward kinematics against KINEMATICS.md, gravity
+// World: loading (and its failures), forward kinematics against the published Baxter values, gravity
 // compensation, reset, determinism, warnings, placing and reading bodies, frames.
 #include <doctest/doctest.h>
 

@@ -1,5 +1,5 @@
 // `smachac help TEMPLATE [-I dir]... [--no-ansi]`: prints a template's meta block readably, as
-// SMACHA's help does (smacha-behaviour.md §7.5): name, description, language, framework, type,
+// SMACHA's help does: name, description, language, framework, type,
 // includes, extends, then variables, input keys, output keys and outcomes. In the lists, a
 // `{name: {description, type, units, values}}` entry is required, a one-entry list around it
 // optional, a longer list a choice of alternatives, and `{heading: [...]}` a group.

@@ -1,4 +1,4 @@
-// Params inheritance, lookups and string constructs (smacha-behaviour.md §2.5).
+// Params inheritance, lookups and string constructs, as SMACHA resolves them.
 #include <doctest/doctest.h>
 
 #include "frontend/lookups.h"

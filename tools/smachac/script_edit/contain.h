@@ -1,5 +1,5 @@
 // `smachac contain`: replaces a run of consecutive root states by one new container state
-// (SMACHA's contain, smacha-behaviour.md §7.3, with its bugs fixed). The steps and their rules:
+// (SMACHA's contain, with its bugs fixed). The steps and their rules:
 //   selection.h         which states (consecutive root states, in order)
 //   contain_outcomes.h  outcomes, transitions, outcome_map, default outcome, redirects
 //   contain_params.h    params lifted into the container, lookups renamed

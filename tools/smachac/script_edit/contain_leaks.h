@@ -1,4 +1,4 @@
-// contain: SMACHA's params leak (smacha-behaviour.md §2.6): a root state that includes a
+// contain: SMACHA's params leak: a root state that includes a
 // sub-script hands its params to every later root state. Once that state is inside the
 // container, its params leak only inside it. Rules:
 //   * a root state after the selection whose last preceding root include is selected, and

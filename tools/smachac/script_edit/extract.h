@@ -1,10 +1,10 @@
 // `smachac extract`: turns a root state into a sub-script and the script into its
-// super-script (SMACHA's extract, smacha-behaviour.md §7.4, with its bugs fixed). Rules:
+// super-script (SMACHA's extract, with its bugs fixed). Rules:
 //   * the state must be a root state (selection.h); SMACHA used the last one otherwise
 //   * its `params`, `userdata`, `remapping` and `transitions` (long or short spelling) stay
 //     in the super-script, in their order, after a new `script: <sub-script name>` (`S:`
 //     when the state is written in shorthand), which is what SMACHA's sub-script includes
-//     pass on (smacha-behaviour.md §2.6)
+//     pass on (as SMACHA's params do)
 //   * every other key moves to the sub-script: a one-state list `- STATE: {...}`, the state's
 //     text de-indented so that its dash is at column 0
 //   * in block style each key takes its lines and the comment lines above it along; a flow

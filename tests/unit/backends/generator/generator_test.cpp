@@ -1,4 +1,4 @@
-// The generator's algorithm (smacha-behaviour.md §3) on small in-memory templates: blocks
+// The generator's algorithm (SMACHA's) on small in-memory templates: blocks
 // flow into buffers, containers replace their children's body, template globals persist to
 // later states at their level and below, defined_headers is pre-seeded by the base, and
 // template problems become located diagnostics.

@@ -1,5 +1,5 @@
-// Ik: forward kinematics against the published Baxter values, the demo's poses for both arms, unreachable
-// and invalid targets as results, joint limits, and the world left untouched.
+// Ik: forward kinematics against the published Baxter values, the demo's poses for both arms,
+// unreachable and invalid targets as results, joint limits, and the world left untouched.
 #include <doctest/doctest.h>
 
 #include <cmath>

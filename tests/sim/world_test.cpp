@@ -1,5 +1,5 @@
-// World: loading (and its failures), forward kinematics against the published Baxter values, gravity
-// compensation, reset, determinism, warnings, placing and reading bodies, frames.
+// World: loading (and its failures), forward kinematics against the published Baxter values,
+// gravity compensation, reset, determinism, warnings, placing and reading bodies, frames.
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -75,6 +75,7 @@ from flexbe_core import PriorityContainer
 from flexbe_core import initialize_flexbe_core
 from core_states_flexbe_behaviors.core_states_states import SleepState
 from core_states_flexbe_behaviors.core_states_states import CallbacksState
+from core_states_flexbe_behaviors.core_states_states import ConditionalOutcomeState
 from core_states_flexbe_behaviors.core_states_states import PrintUserdataState
 # Additional imports can be added inside the following tags
 # [MANUAL_IMPORT]
@@ -106,8 +107,8 @@ class CoreStatesSM(Behavior):
 
     def create(self):
         """Create state machine."""
-        # x:30 y:365
-        _state_machine = OperatableStateMachine(outcomes=['finished'])
+        # x:30 y:365, x:130 y:365
+        _state_machine = OperatableStateMachine(outcomes=['finished', 'small'])
         _state_machine.userdata.counter = 1
 
         # Additional creation code can be added inside the following tags
@@ -120,10 +121,13 @@ class CoreStatesSM(Behavior):
             OperatableStateMachine.add('NAP', SleepState(time=0.2), transitions={'succeeded': 'COUNT'}, autonomy={'succeeded': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('COUNT', CallbacksState(callbacks={'counter': lambda ud: ud.counter + 1, 'double': lambda ud: ud.counter * 2}, input_keys=['counter'], output_keys=['counter', 'double']), transitions={'succeeded': 'SHOW'}, autonomy={'succeeded': Autonomy.Off}, remapping={'counter': 'counter', 'double': 'double'})
+            OperatableStateMachine.add('COUNT', CallbacksState(callbacks={'counter': lambda ud: ud.counter + 1, 'double': lambda ud: ud.counter * 2}, input_keys=['counter'], output_keys=['counter', 'double']), transitions={'succeeded': 'CHECK'}, autonomy={'succeeded': Autonomy.Off}, remapping={'counter': 'counter', 'double': 'double'})
 
             # x:430 y:40
-            OperatableStateMachine.add('SHOW', PrintUserdataState(keys=['counter', 'double']), transitions={'succeeded': 'finished'}, autonomy={'succeeded': Autonomy.Off}, remapping={'counter': 'counter', 'double': 'double'})
+            OperatableStateMachine.add('CHECK', ConditionalOutcomeState(outcomes=['big', 'default'], callbacks={'big': lambda ud: ud.double > 3}, input_keys=['double'], output_keys=['outcome']), transitions={'big': 'SHOW', 'default': 'small'}, autonomy={'big': Autonomy.Off, 'default': Autonomy.Off}, remapping={'double': 'double', 'outcome': 'outcome'})
+
+            # x:630 y:40
+            OperatableStateMachine.add('SHOW', PrintUserdataState(keys=['counter', 'double', 'outcome']), transitions={'succeeded': 'finished'}, autonomy={'succeeded': Autonomy.Off}, remapping={'counter': 'counter', 'double': 'double', 'outcome': 'outcome'})
 
         return _state_machine
 
@@ -184,6 +188,43 @@ class CallbacksState(EventState):
         for key, callback in self._callbacks.items():
             userdata[key] = callback(userdata)
         return 'succeeded'
+
+class ConditionalOutcomeState(EventState):
+    """
+    Runs its callbacks, then ends with the first outcome whose key is set and true, else
+    `default`; writes the choice to `outcome`.
+
+    -- outcomes     list    The outcomes, checked in order.
+    -- callbacks    dict    Outcome -> function of the userdata returning a truth value.
+    -- input_keys   list    The userdata keys the callbacks read.
+    -- output_keys  list    Other userdata keys the state writes.
+
+    #> outcome      str     The chosen outcome.
+
+    <= (any)                The first outcome that holds, or `default`.
+    """
+
+    def __init__(self, outcomes, callbacks, input_keys, output_keys):
+        # A condition's callback writes the key named like the outcome, which execute() then
+        # reads: it is both an input and an output key.
+        self._conditions = [o for o in outcomes if o != 'default']
+        input_keys = list(input_keys) + [o for o in self._conditions if o not in input_keys]
+        output_keys = list(output_keys) + [o for o in self._conditions + ['outcome']
+                                           if o not in output_keys]
+        super(ConditionalOutcomeState, self).__init__(outcomes=self._conditions + ['default'],
+                                                      input_keys=input_keys,
+                                                      output_keys=output_keys)
+        self._callbacks = callbacks
+
+    def execute(self, userdata):
+        for key, callback in self._callbacks.items():
+            userdata[key] = callback(userdata)
+        for outcome in self._conditions:
+            if outcome in userdata and userdata[outcome]:
+                userdata.outcome = outcome
+                return outcome
+        userdata.outcome = 'default'
+        return 'default'
 
 class PrintUserdataState(EventState):
     """

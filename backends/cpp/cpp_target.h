@@ -21,8 +21,4 @@ std::optional<std::vector<OutputFile>> emitCpp(const ir::Module& module, EmitCon
 /// The template search path of the target: -I directories, then the built-in `cpp/` set.
 generator::TemplatePath templatePath(const std::vector<std::string>& template_dirs);
 
-/// Reports every backtick expression of a callback or userdata value that is a Python lambda;
-/// returns whether there was none.
-bool checkNoPythonLambdas(const ir::Module& module, DiagnosticEmitter& diags);
-
 }  // namespace smachac::backends::cpp

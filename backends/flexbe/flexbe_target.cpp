@@ -6,6 +6,7 @@
 
 #include "backends/flexbe/behavior_writer.h"
 #include "backends/flexbe/manual_sections.h"
+#include "backends/foreign_lambdas.h"
 #include "backends/generator/generator.h"
 #include "backends/smach/python_extensions.h"
 #include "templates/builtin_templates.h"
@@ -71,6 +72,7 @@ std::vector<OutputFile> splitFiles(std::string_view text) {
 }
 
 std::optional<std::vector<OutputFile>> emitFlexbe(const ir::Module& module, EmitContext& context) {
+  if (!checkLambdaLanguage(module, context.diags, CodeLanguage::Python)) return std::nullopt;
   generator::TemplatePath path{
       context.options.template_dirs, {"flexbe/"}, templates::builtinTemplates()};
   generator::ValueConverter converter;

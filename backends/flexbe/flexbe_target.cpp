@@ -71,10 +71,13 @@ std::vector<OutputFile> splitFiles(std::string_view text) {
   return files;
 }
 
+generator::TemplatePath templatePath(const std::vector<std::string>& template_dirs) {
+  return {template_dirs, {"flexbe/"}, templates::builtinTemplates()};
+}
+
 std::optional<std::vector<OutputFile>> emitFlexbe(const ir::Module& module, EmitContext& context) {
   if (!checkLambdaLanguage(module, context.diags, CodeLanguage::Python)) return std::nullopt;
-  generator::TemplatePath path{
-      context.options.template_dirs, {"flexbe/"}, templates::builtinTemplates()};
+  generator::TemplatePath path = templatePath(context.options.template_dirs);
   generator::ValueConverter converter;
   tmpl::Environment env(path.dirs, path.builtin_sets, path.builtins);
   smach::registerPythonExtensions(env, converter, context.options.comments);

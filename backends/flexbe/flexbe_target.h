@@ -11,11 +11,15 @@
 #include <string_view>
 #include <vector>
 
+#include "backends/generator/template_catalog.h"
 #include "backends/targets.h"
 
 namespace smachac::backends::flexbe {
 
 std::optional<std::vector<OutputFile>> emitFlexbe(const ir::Module& module, EmitContext& context);
+
+/// The template search path of the target: -I directories, then the built-in `flexbe/` set.
+generator::TemplatePath templatePath(const std::vector<std::string>& template_dirs);
 
 /// The files of the base template's output, split on its `#@smachac-file <path>` lines.
 std::vector<OutputFile> splitFiles(std::string_view text);

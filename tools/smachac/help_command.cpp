@@ -1,40 +1,39 @@
-// `smachac help TEMPLATE [-I dir]... [--no-ansi]`: prints a template's meta block readably, as
-// SMACHA's help does: name, description, language, framework, type,
+// `smachac help [TEMPLATE] [--target=smach|cpp|flexbe] [-I dir]... [--ansi|--no-ansi]`: without
+// a template, lists the templates of each target (or of --target) with a one-line summary;
+// with one, prints its meta block readably, as SMACHA's help does: name, description,
+// language, framework, type,
 // includes, extends, then variables, input keys, output keys and outcomes. In the lists, a
 // `{name: {description, type, units, values}}` entry is required, a one-entry list around it
 // optional, a longer list a choice of alternatives, and `{heading: [...]}` a group.
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <iostream>
 #include <optional>
 #include <string>
 
-#include "backends/smach/smach_target.h"
 #include "backends/tmpl/environment.h"
 #include "backends/tmpl/value_convert.h"
 #include "backends/tmpl/value_print.h"
 #include "ir/support/diagnostic_emitter.h"
 #include "ir/support/diagnostic_printer.h"
 #include "tools/smachac/commands.h"
+#include "tools/smachac/help_style.h"
+#include "tools/smachac/template_list.h"
 
 namespace smachac::driver {
 namespace {
 
 struct HelpOptions {
   std::string template_name;
+  std::string target;  ///< "" (every target when listing, smach for one template)
   std::vector<std::string> template_dirs;
+  bool ansi = false;
   bool no_ansi = false;
-};
 
-/// ANSI styles, empty with --no-ansi.
-struct Style {
-  std::string title, heading, name, type, reset;
-  explicit Style(bool ansi)
-      : title(ansi ? "\033[1;4;32m" : ""),
-        heading(ansi ? "\033[1;35m" : ""),
-        name(ansi ? "\033[1;34m" : ""),
-        type(ansi ? "\033[33m" : ""),
-        reset(ansi ? "\033[0m" : "") {}
+  /// Colours on a terminal, or when asked; never with --no-ansi.
+  bool colours() const { return !no_ansi && (ansi || isatty(STDOUT_FILENO) != 0); }
 };
 
 std::string text(const tmpl::Value& v) {
@@ -164,17 +163,20 @@ class MetaPrinter {
   }
 
   std::ostream& out_;
-  Style style_;
+  HelpStyle style_;
 };
 
 std::optional<int> parse(HelpOptions& o, const Args& args) {
   CLI::App app{"smachac help: describe a template from its meta block", "smachac help"};
-  app.add_option("template", o.template_name, "template name (Foo) or file name (Foo.tpl.py)")
-      ->required()
+  app.add_option("template", o.template_name,
+                 "template name (Foo) or file name (Foo.tpl.py); without one, list the templates")
       ->type_name("TEMPLATE");
+  app.add_option("--target", o.target, "the target whose templates to describe (default smach)")
+      ->check(CLI::IsMember({"smach", "cpp", "flexbe"}));
   app.add_option("-I,--template-dir", o.template_dirs,
                  "template search directory, before the built-ins (repeatable)")
       ->allow_extra_args(false);
+  app.add_flag("--ansi", o.ansi, "colours even when the output is not a terminal");
   app.add_flag("-n,--no-ansi", o.no_ansi, "plain text, without colours");
   std::vector<std::string> reversed(args.rbegin(), args.rend());
   try {
@@ -198,10 +200,16 @@ int fail(DiagnosticEmitter& diags, const SourceManager& sources) {
 int runHelp(const Args& args) {
   HelpOptions o;
   if (std::optional<int> code = parse(o, args)) return *code;
-  generator::TemplatePath path = backends::smach::templatePath(o.template_dirs);
+  if (o.template_name.empty()) {
+    const std::vector<std::string> every = {"smach", "cpp", "flexbe"};
+    for (const std::string& target : o.target.empty() ? every : std::vector{o.target}) {
+      listTemplates(std::cout, target, o.template_dirs, HelpStyle(o.colours()));
+    }
+    return kExitOk;
+  }
+  generator::TemplatePath path = targetTemplatePath(o.target, o.template_dirs);
   generator::ValueConverter converter;
-  std::unique_ptr<tmpl::Environment> env_owner =
-      backends::smach::makeEnvironment(path, converter, false);
+  std::unique_ptr<tmpl::Environment> env_owner = targetEnvironment(o.target, path, converter);
   tmpl::Environment& env = *env_owner;
   SourceManager sources;
   DiagnosticEmitter diags;
@@ -218,7 +226,7 @@ int runHelp(const Args& args) {
       throw tmpl::TemplateError(*name, 0, 0,
                                 "template `" + *name + "` has no meta block to describe it");
     }
-    MetaPrinter(std::cout, !o.no_ansi).print(parsed);
+    MetaPrinter(std::cout, o.colours()).print(parsed);
   } catch (const tmpl::TemplateError& e) {
     generator::TemplateFiles files(sources, path.builtins);
     diags.emit(DiagKind::TemplateError, files.locate(e), e.message());

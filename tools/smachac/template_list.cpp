@@ -1,0 +1,84 @@
+// listTemplates (template_list.h).
+#include "tools/smachac/template_list.h"
+
+#include <memory>
+
+#include "backends/cpp/cpp_extensions.h"
+#include "backends/cpp/cpp_target.h"
+#include "backends/flexbe/flexbe_target.h"
+#include "backends/smach/python_extensions.h"
+#include "backends/smach/smach_target.h"
+#include "backends/tmpl/value_convert.h"
+#include "backends/tmpl/value_print.h"
+
+namespace smachac::driver {
+namespace {
+
+constexpr size_t kSummaryWidth = 70;
+
+/// `text` cut at a space to at most kSummaryWidth characters, with "..." when cut.
+std::string shortened(std::string text) {
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  if (text.size() <= kSummaryWidth) return text;
+  size_t cut = text.rfind(' ', kSummaryWidth - 3);
+  text.resize(cut == std::string::npos || cut == 0 ? kSummaryWidth - 3 : cut);
+  return text + "...";
+}
+
+/// The first sentence of a template's meta description, on one line; "" without one.
+std::string summary(tmpl::Environment& env, const std::string& name) {
+  std::optional<std::string> resolved = env.resolveScriptTemplate(name);
+  if (!resolved) return "";
+  try {
+    std::optional<std::string> meta = env.metaBlock(*resolved);
+    if (!meta) return "";
+    tmpl::Value parsed = tmpl::parseYaml(*meta, *resolved + " (meta block)");
+    const tmpl::Value* description =
+        parsed.isDict() ? parsed.dict().findString("description") : nullptr;
+    if (!description || !description->isString()) return "";
+    std::string text = tmpl::str(*description);
+    for (char& c : text) c = c == '\n' ? ' ' : c;
+    size_t end = text.find(". ");
+    if (end != std::string::npos) text.resize(end + 1);
+    return shortened(text);
+  } catch (const tmpl::TemplateError&) {
+    return "(its meta block does not parse)";
+  }
+}
+
+}  // namespace
+
+generator::TemplatePath targetTemplatePath(const std::string& target,
+                                           const std::vector<std::string>& template_dirs) {
+  if (target == "cpp") return backends::cpp::templatePath(template_dirs);
+  if (target == "flexbe") return backends::flexbe::templatePath(template_dirs);
+  return backends::smach::templatePath(template_dirs);
+}
+
+std::unique_ptr<tmpl::Environment> targetEnvironment(const std::string& target,
+                                                     const generator::TemplatePath& path,
+                                                     const generator::ValueConverter& converter) {
+  auto env = std::make_unique<tmpl::Environment>(path.dirs, path.builtin_sets, path.builtins);
+  if (target == "cpp") {
+    backends::cpp::registerCppExtensions(*env, converter, false);
+  } else {
+    backends::smach::registerPythonExtensions(*env, converter, false);
+  }
+  return env;
+}
+
+void listTemplates(std::ostream& out, const std::string& target,
+                   const std::vector<std::string>& template_dirs, const HelpStyle& style) {
+  generator::TemplatePath path = targetTemplatePath(target, template_dirs);
+  generator::ValueConverter converter;
+  std::unique_ptr<tmpl::Environment> env = targetEnvironment(target, path, converter);
+  out << style.title << target << " templates:" << style.reset << "\n";
+  for (const std::string& name : generator::templateNames(path)) {
+    out << "  " << style.name << name << style.reset;
+    std::string text = summary(*env, name);
+    if (!text.empty()) out << std::string(name.size() < 28 ? 28 - name.size() : 1, ' ') << text;
+    out << "\n";
+  }
+}
+
+}  // namespace smachac::driver

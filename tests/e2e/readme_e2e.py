@@ -1,5 +1,6 @@
 """The README's tour shows what the files hold and what the commands print, its shell
-sessions run as shown, and its pre-commit set-up works as written.
+sessions run as shown, its template table is made from the templates, and its pre-commit
+set-up works as written.
 
 A shown block may leave lines out where it has a line `...`: each run of lines between two
 `...` must appear in the real text as consecutive lines, in the order shown.
@@ -8,6 +9,7 @@ import os
 import re
 import shutil
 import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -123,6 +125,12 @@ class Tour(unittest.TestCase):
         actual = smachac("-target=smach", "examples/core/nesting.yml").splitlines()
         main = actual[next(i for i, l in enumerate(actual) if l.startswith("def main")):]
         self.assert_shown(shown[2:], main, "the SMACH output of examples/core/nesting.yml")
+
+    def test_the_template_table_is_made_from_the_templates(self):
+        result = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "template_table.py"),
+                                 SMACHAC, os.path.join(ROOT, "README.md"), "--check"],
+                                capture_output=True, text=True, timeout=60)
+        self.assertEqual(result.returncode, 0, result.stderr)
 
     def test_mistakes_are_reported_as_shown(self):
         self.run_session(block_starting("$ cat broken.yml"))

@@ -2,6 +2,7 @@
 #include "tools/smachac/template_list.h"
 
 #include <memory>
+#include <string_view>
 
 #include "backends/cpp/cpp_extensions.h"
 #include "backends/cpp/cpp_target.h"
@@ -25,6 +26,16 @@ std::string shortened(std::string text) {
   return text + "...";
 }
 
+/// Where the first sentence ends (its full stop), not counting "e.g." and "i.e.".
+size_t sentenceEnd(std::string_view text) {
+  for (size_t end = text.find(". "); end != std::string_view::npos;
+       end = text.find(". ", end + 1)) {
+    std::string_view before = text.substr(0, end);
+    if (!before.ends_with("e.g") && !before.ends_with("i.e")) return end;
+  }
+  return std::string_view::npos;
+}
+
 /// The first sentence of a template's meta description, on one line; "" without one.
 std::string summary(tmpl::Environment& env, const std::string& name) {
   std::optional<std::string> resolved = env.resolveScriptTemplate(name);
@@ -38,7 +49,7 @@ std::string summary(tmpl::Environment& env, const std::string& name) {
     if (!description || !description->isString()) return "";
     std::string text = tmpl::str(*description);
     for (char& c : text) c = c == '\n' ? ' ' : c;
-    size_t end = text.find(". ");
+    size_t end = sentenceEnd(text);
     if (end != std::string::npos) text.resize(end + 1);
     return shortened(text);
   } catch (const tmpl::TemplateError&) {

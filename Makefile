@@ -7,7 +7,7 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DSMACHAC_WERROR=ON
 SMACHAC := $(BUILD)/tools/smachac/smachac
 
-.PHONY: all deps configure build test demo bench fuzz test-sanitize clean
+.PHONY: all deps configure build test demo demo-ros bench fuzz test-sanitize clean
 
 all: build
 
@@ -33,6 +33,12 @@ demo: configure
 	cmake --build $(BUILD) -j $(JOBS) --target $(DEMO_TARGETS)
 	@bash tools/demo.sh $(SMACHAC)
 	@bash sim/experiments/run_demo.sh $(BUILD)
+
+# The stacking experiment as the paper ran it: SMACH Python on a (simulated) Baxter over ROS.
+# Builds only the compiler and the simulation's ROS bridge.
+demo-ros: configure
+	cmake --build $(BUILD) -j $(JOBS) --target smachac smachac_sim_bridge
+	@bash sim/ros/run_demo_ros.sh $(BUILD)
 
 bench: deps
 	cmake -S . -B $(BUILD)-bench $(CMAKE_FLAGS) -DSMACHAC_BUILD_BENCH=ON -DSMACHAC_BUILD_TESTS=OFF

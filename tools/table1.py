@@ -20,6 +20,11 @@ paper's order) it counts files/lines (lines as `wc -l` counts them) of:
 So, as in the paper, the templates and sub-scripts are counted once, for the first
 experiment that uses them; a later experiment counts only what it adds. Each cell is
 printed as `ours (paper)`; the paper's figures are for SMACH Python on Gazebo.
+
+After each table comes how the experiments run on the simulated Baxter (MuJoCo): the C++
+programs of sim/experiments directly, the SMACH and FlexBE programs over ROS through
+tools/baxter-ros-run. With --run each experiment is executed and its outcome, verdict and
+simulated time are printed; without it, the ctest that executes it is named.
 """
 import argparse
 import os
@@ -150,6 +155,51 @@ def print_table(target, rows):
                                      "no template or sub-script not counted above"))
 
 
+RUN_TESTS = {"cpp": "ctest -R sim_generated_{stem}", "smach": "ctest -R sim-ros/smach-{stem}",
+             "flexbe": "ctest -R sim-ros/flexbe-{stem}"}
+REPORT_LINE = re.compile(r"^  ((?:not )?stacked: .*|block1 at .*)$", re.MULTILINE)
+
+
+def run_command(target, stem, root, build):
+    script = os.path.join(root, "examples", "baxter", stem + ".yml")
+    if target == "cpp":
+        return [os.path.join(build, "sim", "experiments", "baxter_" + stem), "--robot-quiet"]
+    return [sys.executable, os.path.join(root, "tools", "baxter-ros-run"), "--target", target,
+            "--build", build, script]
+
+
+def run_experiment(target, stem, root, build):
+    """`outcome; verdict (or block1's place); simulated time` of one run on the simulated
+    Baxter, or why it did not run."""
+    try:
+        result = subprocess.run(run_command(target, stem, root, build), capture_output=True,
+                                text=True, timeout=600)
+    except (OSError, subprocess.TimeoutExpired) as error:
+        return f"not run: {error}"
+    outcome = re.search(r"^outcome: (\S+)$", result.stdout, re.MULTILINE)
+    if outcome is None:
+        last = (result.stdout + result.stderr).strip().splitlines()
+        return f"not run: {last[-1] if last else 'exit %d' % result.returncode}"
+    verdicts = REPORT_LINE.findall(result.stdout)
+    verdict = verdicts[-1] if stem != "pick_and_place" else verdicts[0]
+    simulated = re.search(r"^scene after ([0-9.]+ s) simulated", result.stdout, re.MULTILINE)
+    return "; ".join([outcome.group(1), verdict] + ([simulated.group(1) + " simulated"]
+                                                    if simulated else []))
+
+
+def print_runs(target, root, build):
+    how = ("its C++ program (sim/experiments)" if target == "cpp" else
+           "tools/baxter-ros-run, over ROS")
+    print()
+    print(f"On the simulated Baxter, target {target}, through {how}:")
+    for label, stem in EXPERIMENTS:
+        if build:
+            print(f"  {label}: {run_experiment(target, stem, root, build)}")
+        else:
+            print(f"  {label}: executed by `{RUN_TESTS[target].format(stem=stem)}` "
+                  "(--run executes it here)")
+
+
 def find_smachac(root):
     path = os.path.join(root, "build", "tools", "smachac", "smachac")
     if not os.access(path, os.X_OK):
@@ -165,6 +215,10 @@ def main():
                              "(default all)")
     parser.add_argument("--smachac", help="the smachac binary (default build/tools/smachac/"
                                           "smachac)")
+    parser.add_argument("--run", action="store_true",
+                        help="execute each experiment on the simulated Baxter")
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"),
+                        help="the build tree whose programs --run executes (default build/)")
     parser.add_argument("--root", default=ROOT, help=argparse.SUPPRESS)
     args = parser.parse_args()
     smachac = os.path.abspath(args.smachac) if args.smachac else find_smachac(args.root)
@@ -175,6 +229,7 @@ def main():
         if i:
             print()
         print_table(target, measure(target, smachac, args.root))
+        print_runs(target, args.root, os.path.abspath(args.build) if args.run else None)
     return 0
 
 

@@ -47,19 +47,39 @@ Gripper::Gripper(World& world, Side side) : world_(world), side_(side) {
   }
 }
 
-void Gripper::commandOpen() {
-  auto guard = world_.lock();
-  closed_ = false;
-}
+void Gripper::commandOpen() { commandOpening(1.0); }
 
-void Gripper::commandClose() {
+void Gripper::commandClose() { commandOpening(0.0); }
+
+void Gripper::commandOpening(double fraction) {
   auto guard = world_.lock();
-  closed_ = true;
+  opening_ = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 1.0) : opening_;
 }
 
 void Gripper::applyControl() {
   mjData* data = world_.data();
-  for (int f = 0; f < 2; ++f) data->ctrl[actuator_[f]] = closed_ ? 0.0 : openCommand_[f];
+  for (int f = 0; f < 2; ++f) data->ctrl[actuator_[f]] = opening_ * openCommand_[f];
+}
+
+auto Gripper::opening() const -> double {
+  auto guard = world_.lock();
+  const mjData* data = world_.data();
+  double sum = 0.0;
+  for (int f = 0; f < 2; ++f) sum += data->qpos[fingerQpos_[f]] / openCommand_[f];
+  return std::clamp(sum / 2.0, 0.0, 1.0);
+}
+
+auto Gripper::fingerForce() const -> double {
+  auto guard = world_.lock();
+  const mjData* data = world_.data();
+  return (std::abs(data->actuator_force[actuator_[0]]) +
+          std::abs(data->actuator_force[actuator_[1]])) /
+         2.0;
+}
+
+auto Gripper::moving() const -> bool {
+  auto guard = world_.lock();
+  return fingerSpeed() >= kSettledSpeed;
 }
 
 auto Gripper::fingerSpeed() const -> double {

@@ -18,6 +18,11 @@ constexpr JointPositions kVelocityLimits = {1.5, 1.5, 1.5, 1.5, 4.0, 4.0, 4.0};
 constexpr double kShortestMove = 0.5;   // s
 constexpr double kLimitSlack = 1e-6;    // rad a goal may lie outside a limit (then clamped)
 constexpr double kQuinticPeak = 1.875;  // peak / mean speed of the minimum-jerk profile
+// Streaming mode: the target's speed changes by at most the joint's speed limit over
+// kStreamRampTime (s); it is never more than lets it stop at the goal, and closes the last
+// of the distance with the time constant kStreamTimeConstant (s).
+constexpr double kStreamRampTime = 0.6;
+constexpr double kStreamTimeConstant = 0.05;
 
 // Minimum-jerk profile: position fraction and its time derivative (per unit duration).
 auto quintic(double s) -> std::pair<double, double> {
@@ -103,6 +108,7 @@ auto Limb::startMove(const JointPositions& goal, const MoveOptions& options) -> 
   startTime_ = world_.time();
   endTime_ = startTime_ + moveDuration(start_, goal_, options.speed);
   tolerance_ = options.tolerance;
+  streaming_ = false;
   return true;
 }
 
@@ -137,9 +143,42 @@ void Limb::holdCurrent() {
   auto guard = world_.lock();
   start_ = goal_ = jointPositions();
   startTime_ = endTime_ = world_.time();
+  streaming_ = false;
+}
+
+auto Limb::commandPositions(const JointPositions& goal, double speed) -> bool {
+  if (!validGoal(goal) || !std::isfinite(speed)) return false;
+  auto guard = world_.lock();
+  if (!streaming_) {
+    streamTarget_ = jointPositions();
+    streamVelocity_ = {};
+    streamTime_ = world_.time();
+  }
+  for (size_t i = 0; i < goal.size(); ++i) goal_[i] = std::clamp(goal[i], lower_[i], upper_[i]);
+  streamSpeed_ = std::clamp(speed, 0.01, 1.0);
+  streaming_ = true;
+  return true;
+}
+
+void Limb::applyStreamControl(double time) {
+  const double dt = std::max(0.0, time - streamTime_);
+  streamTime_ = time;
+  mjData* data = world_.data();
+  for (size_t i = 0; i < goal_.size(); ++i) {
+    const double limit = streamSpeed_ * velocityLimit_[i];
+    const double acceleration = limit / kStreamRampTime;
+    const double error = goal_[i] - streamTarget_[i];
+    const double stoppable = std::min(limit, std::sqrt(2.0 * acceleration * std::abs(error)));
+    const double wanted = std::clamp(error / kStreamTimeConstant, -stoppable, stoppable);
+    const double ramp = acceleration * dt;
+    streamVelocity_[i] += std::clamp(wanted - streamVelocity_[i], -ramp, ramp);
+    streamTarget_[i] += streamVelocity_[i] * dt;
+    data->ctrl[actuator_[i]] = streamTarget_[i] + leadTime_[i] * streamVelocity_[i];
+  }
 }
 
 void Limb::applyControl(double time) {
+  if (streaming_) return applyStreamControl(time);
   const double duration = endTime_ - startTime_;
   const double s = duration > 0.0 ? (time - startTime_) / duration : 1.0;
   const auto [fraction, rate] = quintic(s);

@@ -25,7 +25,8 @@ class LiveRun:
         self.timed_out = False
         self.returncode = None
 
-    def _poll(self):
+    def poll(self):
+        """Reads the lines the program has written since the last poll."""
         text = read(self.log)
         complete = text[:text.rfind("\n") + 1]
         now = time.monotonic() - self.began
@@ -37,12 +38,12 @@ class LiveRun:
         """Seconds since the start when a line holding marker appeared, None if it did not."""
         deadline = time.monotonic() + seconds
         while True:
-            self._poll()
+            self.poll()
             for at, line in self.lines:
                 if marker in line:
                     return at
             if self.process.poll() is not None or time.monotonic() > deadline:
-                self._poll()
+                self.poll()
                 return next((at for at, line in self.lines if marker in line), None)
             time.sleep(0.02)
 
@@ -54,11 +55,11 @@ class LiveRun:
         """Waits for the program's end, polling its output; stops it after timeout."""
         deadline = time.monotonic() + timeout
         while self.process.poll() is None and time.monotonic() < deadline:
-            self._poll()
+            self.poll()
             time.sleep(0.02)
         self.timed_out = self.process.poll() is None
         self.ros.stop(self.process)
-        self._poll()
+        self.poll()
         self.returncode = self.process.returncode
         return self
 

@@ -31,12 +31,13 @@ headless, that is reported as an error (exit 1) instead of waiting for ever.
 
 With --preempt-after, FlexBE's preempt command (an Empty message on flexbe/command/preempt,
 which every FlexBE state machine listens to) is published that many seconds after the
-behavior starts.
+behavior starts; SIGUSR1 publishes it at any time.
 """
 import argparse
 import json
 import random
 import os
+import signal
 import sys
 import threading
 import time
@@ -208,10 +209,23 @@ def prepared(args, operator):
     return interface, behavior
 
 
-def preempt_later(seconds):
+def preempt_command():
+    """Publishes FlexBE's preempt command after --preempt-after seconds and on SIGUSR1."""
     from std_msgs.msg import Empty
     command = rospy.Publisher("flexbe/command/preempt", Empty, queue_size=1, latch=True)
-    timer = threading.Timer(seconds, command.publish, (Empty(),))
+
+    def preempt():
+        command.publish(Empty())
+
+    # From a thread of its own: the handler runs in the main thread, which may hold the
+    # publisher's lock.
+    signal.signal(signal.SIGUSR1,
+                  lambda _signum, _frame: threading.Thread(target=preempt, daemon=True).start())
+    return preempt
+
+
+def preempt_later(preempt, seconds):
+    timer = threading.Timer(seconds, preempt)
     timer.daemon = True
     timer.start()
 
@@ -228,8 +242,9 @@ def run(args):
         if error is not None:
             raise BehaviorError("a state raised %s: %s" % (type(error).__name__, error))
 
+    preempt = preempt_command()
     if args.preempt_after is not None:
-        preempt_later(args.preempt_after)
+        preempt_later(preempt, args.preempt_after)
     outcome = interface.execute(userdata, spin_cb=check_tick)
     if outcome is None:
         raise BehaviorError("stopped before the behavior returned an outcome")

@@ -10,11 +10,12 @@ repeats), every state that a container adds reports its entry and its outcome un
 introspection program returns (the machine has finished) after the introspection server has
 published, and the top state machine's outcome and final userdata are reported. With
 --preempt-after, the top state machine is asked to preempt (request_preempt) that many seconds
-after it starts, as a parent or a user would.
+after it starts, as a parent or a user would; SIGUSR1 asks it the same at any time.
 """
 import argparse
 import random
 import runpy
+import signal
 import sys
 import threading
 
@@ -24,6 +25,7 @@ import trace_protocol
 
 _lock = threading.Lock()
 _depth = threading.local()
+_running = []  # the top state machine while it executes
 
 
 def path_of(state):
@@ -66,16 +68,31 @@ def report_top_machine(preempt_after):
         top = getattr(self, "_smachac_label", None) is None and not getattr(_depth, "n", 0)
         if top and preempt_after is not None:
             preempt_later(self, preempt_after)
+        if top:
+            _running.append(self)
         _depth.n = getattr(_depth, "n", 0) + 1
         try:
             outcome = original(self, *args, **kwargs)
         finally:
             _depth.n -= 1
+            if top:
+                _running.remove(self)
         if top:
             trace_protocol.result(outcome, dict(self.userdata._data))
         return outcome
 
     smach.StateMachine.execute = execute
+
+
+def preempt_on_signal():
+    """SIGUSR1 preempts the running top machine, from a thread of its own: the handler runs in
+    the main thread, which may hold the locks that request_preempt() takes."""
+    def preempt():
+        for machine in list(_running):
+            machine.request_preempt()
+
+    signal.signal(signal.SIGUSR1,
+                  lambda _signum, _frame: threading.Thread(target=preempt, daemon=True).start())
 
 
 def return_from_spin():
@@ -103,6 +120,7 @@ def main():
     for container in (smach.StateMachine, smach.Concurrence):
         container.add = traced_add(container.add)
     report_top_machine(args.preempt_after)
+    preempt_on_signal()
     return_from_spin()
     sys.argv = [args.program]
     runpy.run_path(args.program, run_name="__main__")

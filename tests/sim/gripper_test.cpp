@@ -59,6 +59,25 @@ TEST_SUITE("sim_gripper") {
     CHECK(centreOf(*world, "block1").z == doctest::Approx(kBlockRestZ).epsilon(0.05));
     CHECK_FALSE(world->hasWarnings());
   }
+
+  TEST_CASE("a position command moves the fingers to that fraction of their travel") {
+    auto world = loadWorld();
+    Gripper& gripper = world->gripper(Side::kRight);
+    world->stepFor(0.5);
+    CHECK(gripper.opening() == doctest::Approx(1.0).epsilon(0.01));
+    CHECK_FALSE(gripper.moving());
+    gripper.commandOpening(0.5);
+    world->step(5);
+    CHECK(gripper.moving());
+    world->stepFor(1.0);
+    CHECK_FALSE(gripper.moving());
+    CHECK(gripper.opening() == doctest::Approx(0.5).epsilon(0.02));
+    CHECK(gripper.gap() == doctest::Approx((0.035 + 0.077) / 2).epsilon(0.03));
+    gripper.commandOpening(-3.0);  // clamped: closed
+    world->stepFor(1.0);
+    CHECK(gripper.opening() < 0.01);
+    CHECK(gripper.fingerForce() < 1.0);  // closed on nothing: no squeeze left
+  }
 }
 
 }  // namespace

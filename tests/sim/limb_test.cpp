@@ -83,6 +83,41 @@ TEST_SUITE("sim_limb") {
     CHECK(maxJointError(limb.jointPositions(), held) < 0.02);
     CHECK(limb.moveDone());
   }
+
+  TEST_CASE("streamed position commands are followed at the speed ratio and held") {
+    auto world = loadWorld();
+    Limb& limb = world->limb(Side::kLeft);
+    const JointPositions goal = untuckPose(Side::kLeft);
+    REQUIRE(limb.commandPositions(goal, 0.3));
+    double fastest = 0.0;  // s0 ... e1 are limited to 0.3 * 1.5 rad/s
+    double overshoot = 0.0;
+    for (int step = 0; step < 4000; ++step) {
+      world->step();
+      const JointPositions v = limb.jointVelocities();
+      const JointPositions q = limb.jointPositions();
+      for (size_t i = 0; i < 4; ++i) fastest = std::max(fastest, std::abs(v[i]));
+      overshoot = std::max(overshoot, q[3] - goal[3]);  // e1 rises from 0 to 1.94
+    }
+    CHECK(fastest < 0.3 * 1.5 * 1.05);
+    CHECK(fastest > 0.3 * 1.5 * 0.8);
+    CHECK(overshoot < 2e-3);
+    CHECK(maxJointError(limb.jointPositions(), goal) < 1e-3);
+    CHECK_FALSE(world->hasWarnings());
+  }
+
+  TEST_CASE("a new streamed command replaces the goal; an invalid one is ignored") {
+    auto world = loadWorld();
+    Limb& limb = world->limb(Side::kLeft);
+    REQUIRE(limb.commandPositions(untuckPose(Side::kLeft), 1.0));
+    world->stepFor(0.3);
+    REQUIRE(limb.commandPositions(neutralPose(Side::kLeft), 1.0));
+    JointPositions beyond = neutralPose(Side::kLeft);
+    beyond[1] = 1.5;
+    CHECK_FALSE(limb.commandPositions(beyond, 1.0));
+    CHECK_FALSE(limb.commandPositions(neutralPose(Side::kLeft), NAN));
+    world->stepFor(6.0);
+    CHECK(maxJointError(limb.jointPositions(), neutralPose(Side::kLeft)) < 1e-3);
+  }
 }
 
 }  // namespace

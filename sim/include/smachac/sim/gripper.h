@@ -46,6 +46,16 @@ class Gripper {
   /// Non-blocking forms.
   void commandOpen();
   void commandClose();
+  /// Commands the fingers to a fraction of their travel: 0 closed, 1 open (clamped); an
+  /// object between them stops them (Baxter's electric gripper's position command).
+  void commandOpening(double fraction);
+
+  /// Where the fingers are, as a fraction of their travel: 0 closed, 1 open.
+  auto opening() const -> double;
+  /// Whether a finger is still moving (faster than the settling threshold).
+  auto moving() const -> bool;
+  /// The mean force of the finger servos (N, at most 20).
+  auto fingerForce() const -> double;
 
   /// Distance between the pads' inner faces (m): about 35 mm closed, 77 mm open.
   auto gap() const -> double;
@@ -68,7 +78,7 @@ class Gripper {
   int actuator_[2] = {-1, -1};
   int pad_[2] = {-1, -1};
   double openCommand_[2] = {0.0, 0.0};
-  bool closed_ = false;
+  double opening_ = 1.0;  // the commanded fraction of the fingers' travel
 };
 
 }  // namespace smachac::sim

@@ -64,6 +64,12 @@ class Limb {
   /// Holds the current positions (cancels a move).
   void holdCurrent();
 
+  /// Streaming position mode, as Baxter's joint position controller: the servo target
+  /// approaches `goal` no faster than `speed` times each joint's velocity limit, speeding up
+  /// and slowing down smoothly, then holds it. A new command replaces the goal at once (cancels
+  /// a move); returns false, doing nothing, for an invalid goal.
+  auto commandPositions(const JointPositions& goal, double speed) -> bool;
+
   /// Called by World inside each step: writes the servo commands for the current time.
   void applyControl(double time);
 
@@ -71,6 +77,7 @@ class Limb {
   auto validGoal(const JointPositions& goal) const -> bool;
   auto moveDuration(const JointPositions& from, const JointPositions& to, double speed) const
       -> double;
+  void applyStreamControl(double time);
 
   World& world_;
   Side side_;
@@ -88,6 +95,12 @@ class Limb {
   double startTime_ = 0.0;
   double endTime_ = 0.0;
   double tolerance_ = 0.008726646;
+  // Streaming mode (commandPositions): the servo target, its velocity and its speed fraction.
+  bool streaming_ = false;
+  JointPositions streamTarget_{};
+  JointPositions streamVelocity_{};
+  double streamSpeed_ = 0.3;
+  double streamTime_ = 0.0;
 };
 
 }  // namespace smachac::sim

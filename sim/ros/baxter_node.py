@@ -13,7 +13,7 @@ whose timeouts are in simulated time, leave a program time to connect to new top
 prints "FIXTURE READY" once it serves everything. On SIGINT or SIGTERM it steps --settle
 simulated seconds, takes a last snapshot and prints the scene report of the C++ Baxter
 programs and the real-time factor (with --report-json, also as JSON with the block poses, the
-endpoint poses and the fastest joint speed).
+arms' joint positions and endpoint poses, and the fastest joint speed).
 """
 import argparse
 import json
@@ -115,7 +115,9 @@ class BaxterNode:
                        "wall_seconds": wall_seconds, "max_joint_speed": joint_speed,
                        "blocks": {name: self.robot.body_pose(name) for name in BLOCKS},
                        "endpoints": {side: self.robot.endpoint(side)[0]
-                                     for side in ("left", "right")}}
+                                     for side in ("left", "right")},
+                       "joints": {side: self.robot.joint_state(side)[0]
+                                  for side in ("left", "right")}}
         with open(self.args.report_json, "w", encoding="utf-8") as f:
             json.dump(description, f, indent=1)
 

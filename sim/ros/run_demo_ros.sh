@@ -25,20 +25,4 @@ status=0
 /usr/bin/python3 "$root/tools/baxter-ros-run" --build "$build" --snapshots "$demo" \
   "$root/examples/baxter/stacking.yml" 2>&1 | tee "$demo/run.log" || status=$?
 
-echo "== snapshots"
-ls "$demo"/*.png 2>/dev/null || echo "(none)"
-
-echo "== verdict"
-if [[ $status -ne 0 ]]; then
-  echo "FAILED: tools/baxter-ros-run exited with $status"
-  exit 1
-fi
-if ! grep -q '^outcome: succeeded$' "$demo/run.log"; then
-  echo "FAILED: $(grep '^outcome:' "$demo/run.log" || echo 'no outcome')"
-  exit 1
-fi
-if ! grep -q '^  stacked: ' "$demo/run.log"; then
-  echo "FAILED: $(grep 'stacked' "$demo/run.log" || echo 'no stack verdict')"
-  exit 1
-fi
-echo "SUCCESS: outcome succeeded,$(grep '^  stacked: ' "$demo/run.log" | sed 's/^ *//;s/^/ /')"
+bash "$root/sim/experiments/demo_verdict.sh" "$demo" "$status"

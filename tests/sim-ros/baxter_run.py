@@ -87,6 +87,22 @@ def run_on_robot(build, script, target="smach", extra=(), interrupt_at=None):
         return finish(process, "".join(lines), report_path)
 
 
+def write_variant(source, replacements, work_dir):
+    """Writes source with each (old, new) replaced (each old must occur) into work_dir under
+    the same name; returns the new path."""
+    with open(source, encoding="utf-8") as f:
+        text = f.read()
+    for old, new in replacements:
+        if old not in text:
+            raise SystemExit("%s no longer holds %r" % (source, old))
+        text = text.replace(old, new)
+    os.makedirs(work_dir, exist_ok=True)
+    path = os.path.join(work_dir, os.path.basename(source))
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+    return path
+
+
 def horizontal(a, b):
     return math.hypot(a[0] - b[0], a[1] - b[1])
 
@@ -111,6 +127,13 @@ class Checks:
         else:
             self.failed += 1
         return condition
+
+    def run_ended(self, label, result, outcome):
+        """The checks of every run: exit status 0, no Python traceback, the outcome."""
+        self.check(result.returncode == 0, "%s: exit status 0 (%s)" % (label, result.returncode))
+        self.check("Traceback" not in result.stdout, "%s: no Python traceback" % label)
+        return self.check(result.outcome == outcome, "%s: outcome %s (%s)"
+                          % (label, outcome, result.outcome))
 
     def exit_code(self):
         print("%d passed, %d failed" % (self.passed, self.failed))

@@ -21,8 +21,7 @@ HOVER = {"left": (0.7, 0.15, 0.02), "right": (0.7, -0.2, 0.02)}  # the moves tha
 
 
 def check_stopped(checks, how, result, outcome):
-    checks.check(result.returncode == 0, "%s: exit status 0 (%s)" % (how, result.returncode))
-    checks.check(result.outcome == outcome, "%s: outcome %s (%s)" % (how, outcome, result.outcome))
+    checks.run_ended(how, result, outcome)
     checks.check("exit PICK_BLOCKS -> %s" % outcome in result.stdout,
                  "%s: PICK_BLOCKS ended %s" % (how, outcome))
     if not checks.check(bool(result.report), "%s: a scene report" % how):

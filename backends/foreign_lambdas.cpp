@@ -4,6 +4,8 @@
 #include <string>
 #include <string_view>
 
+#include "backends/code_values.h"
+
 namespace smachac::backends {
 namespace {
 
@@ -30,56 +32,19 @@ bool isCppLambda(std::string_view code) {
   return rest.starts_with("(") || rest.starts_with("{");
 }
 
-class LambdaChecker {
- public:
-  LambdaChecker(DiagnosticEmitter& diags, const std::string& state, CodeLanguage target)
-      : diags_(diags), state_(state), target_(target) {}
-
-  void check(const ir::Value& value, const std::string& what) {
-    if (value.kind() == ir::ValueKind::Expression) {
-      if (isForeign(value.asExpression().code)) report(value.loc, what);
-    } else if (value.isList()) {
-      for (const ir::Value& item : std::get<ir::List>(value.data)) check(item, what);
-    } else if (value.isMap()) {
-      for (const ir::MapEntry& entry : std::get<ir::Map>(value.data)) check(entry.value, what);
-    }
-  }
-
-  bool clean() const { return clean_; }
-
- private:
-  bool isForeign(std::string_view code) const {
-    return target_ == CodeLanguage::Cpp ? isPythonLambda(code) : isCppLambda(code);
-  }
-
-  void report(SourceLoc loc, const std::string& what) {
-    DiagKind kind =
-        target_ == CodeLanguage::Cpp ? DiagKind::PythonCodeInCpp : DiagKind::CppCodeInPython;
-    diags_.emit(kind, loc, what, state_);
-    clean_ = false;
-  }
-
-  DiagnosticEmitter& diags_;
-  const std::string& state_;
-  CodeLanguage target_;
-  bool clean_ = true;
-};
-
 }  // namespace
 
 bool checkLambdaLanguage(const ir::Module& module, DiagnosticEmitter& diags, CodeLanguage target) {
+  const DiagKind kind =
+      target == CodeLanguage::Cpp ? DiagKind::PythonCodeInCpp : DiagKind::CppCodeInPython;
   bool clean = true;
-  for (ir::StateId id : module.preorder()) {
-    const ir::State& state = module.state(id);
-    LambdaChecker checker(diags, state.name.text, target);
-    for (const ir::Argument& callback : state.callbacks) {
-      checker.check(callback.value, "callback `" + callback.key.text + "`");
+  forEachCode(module, [&](const CodeSite& site) {
+    const std::string& code = site.value.asExpression().code;
+    if (target == CodeLanguage::Cpp ? isPythonLambda(code) : isCppLambda(code)) {
+      diags.emit(kind, site.value.loc, site.what, site.state);
+      clean = false;
     }
-    for (const ir::Argument& entry : state.userdata) {
-      checker.check(entry.value, "userdata `" + entry.key.text + "`");
-    }
-    clean = clean && checker.clean();
-  }
+  });
   return clean;
 }
 

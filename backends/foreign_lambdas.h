@@ -11,8 +11,8 @@ namespace smachac::backends {
 /// The language a target writes backtick code in.
 enum class CodeLanguage { Python, Cpp };
 
-/// Reports every callback or userdata value of `module` that is a lambda of the other
-/// language; returns whether there was none.
+/// Reports every backtick value of `module` (callbacks, userdata, template variables) that is
+/// a lambda of the other language; returns whether there was none.
 bool checkLambdaLanguage(const ir::Module& module, DiagnosticEmitter& diags, CodeLanguage target);
 
 }  // namespace smachac::backends

@@ -5,7 +5,6 @@
 
 #include "backends/cpp/cpp_extensions.h"
 #include "backends/cpp/cpp_library.h"
-#include "backends/foreign_lambdas.h"
 #include "backends/generator/generator.h"
 #include "templates/builtin_templates.h"
 
@@ -26,7 +25,6 @@ generator::TemplatePath templatePath(const std::vector<std::string>& template_di
 }
 
 std::optional<std::vector<OutputFile>> emitCpp(const ir::Module& module, EmitContext& context) {
-  if (!checkLambdaLanguage(module, context.diags, CodeLanguage::Cpp)) return std::nullopt;
   generator::TemplatePath path = templatePath(context.options.template_dirs);
   generator::ValueConverter converter;
   auto env = std::make_unique<tmpl::Environment>(path.dirs, path.builtin_sets, path.builtins);

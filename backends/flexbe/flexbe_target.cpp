@@ -6,7 +6,6 @@
 
 #include "backends/flexbe/behavior_writer.h"
 #include "backends/flexbe/manual_sections.h"
-#include "backends/foreign_lambdas.h"
 #include "backends/generator/generator.h"
 #include "backends/smach/python_extensions.h"
 #include "templates/builtin_templates.h"
@@ -76,7 +75,6 @@ generator::TemplatePath templatePath(const std::vector<std::string>& template_di
 }
 
 std::optional<std::vector<OutputFile>> emitFlexbe(const ir::Module& module, EmitContext& context) {
-  if (!checkLambdaLanguage(module, context.diags, CodeLanguage::Python)) return std::nullopt;
   generator::TemplatePath path = templatePath(context.options.template_dirs);
   generator::ValueConverter converter;
   tmpl::Environment env(path.dirs, path.builtin_sets, path.builtins);

@@ -10,15 +10,10 @@
 #include "backends/tmpl/py_number.h"
 #include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_print.h"
+#include "ir/support/python_keywords.h"
 
 namespace smachac::backends::smach {
 namespace {
-
-constexpr std::string_view kPythonKeywords[] = {
-    "False", "None",     "True",  "and",    "as",   "assert", "async",  "await",    "break",
-    "class", "continue", "def",   "del",    "elif", "else",   "except", "finally",  "for",
-    "from",  "global",   "if",    "import", "in",   "is",     "lambda", "nonlocal", "not",
-    "or",    "pass",     "raise", "return", "try",  "while",  "with",   "yield"};
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 
@@ -30,8 +25,7 @@ bool isIdentifierChar(char c) {
 bool isPlainName(std::string_view text) {
   if (text.empty() || isDigit(text[0])) return false;
   if (!std::all_of(text.begin(), text.end(), isIdentifierChar)) return false;
-  return std::find(std::begin(kPythonKeywords), std::end(kPythonKeywords), text) ==
-         std::end(kPythonKeywords);
+  return !isPythonKeyword(text);
 }
 
 /// Two or more plain names joined by dots (`geometry_msgs.msg.Point`, `data.csv`).

@@ -1,7 +1,6 @@
 // The SMACH target: environment, skip blocks, generator, output file.
 #include "backends/smach/smach_target.h"
 
-#include "backends/foreign_lambdas.h"
 #include "backends/generator/generator.h"
 #include "backends/smach/python_extensions.h"
 #include "templates/builtin_templates.h"
@@ -31,7 +30,6 @@ std::unique_ptr<tmpl::Environment> makeEnvironment(const generator::TemplatePath
 }
 
 std::optional<std::vector<OutputFile>> emitSmach(const ir::Module& module, EmitContext& context) {
-  if (!checkLambdaLanguage(module, context.diags, CodeLanguage::Python)) return std::nullopt;
   generator::TemplatePath path = templatePath(context.options.template_dirs);
   generator::ValueConverter converter;
   std::unique_ptr<tmpl::Environment> env =

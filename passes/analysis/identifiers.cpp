@@ -6,15 +6,10 @@
 #include <algorithm>
 #include <span>
 
+#include "ir/support/python_keywords.h"
+
 namespace smachac::passes {
 namespace {
-
-// Python 3 keywords (soft keywords such as `match` are valid names).
-constexpr std::string_view kPythonKeywords[] = {
-    "False", "None",     "True",  "and",    "as",   "assert", "async",  "await",    "break",
-    "class", "continue", "def",   "del",    "elif", "else",   "except", "finally",  "for",
-    "from",  "global",   "if",    "import", "in",   "is",     "lambda", "nonlocal", "not",
-    "or",    "pass",     "raise", "return", "try",  "while",  "with",   "yield"};
 
 // C++20 keywords and alternative tokens.
 constexpr std::string_view kCppKeywords[] = {"alignas",       "alignof",     "and",

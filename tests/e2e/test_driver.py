@@ -120,6 +120,27 @@ class CommandLine(TempDirTest):
         self.assertEqual(r.returncode, 2)
         self.assertIn("did you mean one of `unknown-root-key`, `unknown-root-state`?", r.stderr)
 
+    def test_python_syntax_can_be_downgraded(self):
+        script = self.write("s.yml", "name: t\ntemplate: Base\noutcomes: [done]\n"
+                            "userdata: {n: '`f(a=1, 2)`'}\nstates:\n"
+                            "  - A: {template: PrintUserdataState, input_keys: [n],\n"
+                            "        transitions: {succeeded: done}}\n")
+        out = os.path.join(self.dir, "s.py")
+        r = run("-target=smach", script, "-o", out)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("error: userdata `n` of `t` is not a Python expression: positional "
+                      "argument after a keyword argument at character 8", r.stderr)
+        self.assertFalse(os.path.exists(out))
+        r = run("lint", script)  # lint (the pre-commit hook) checks the code too
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("[python-syntax]", r.stderr)
+        self.assertEqual(run("lint", "-target=ir", script).returncode, 0)  # no Python written
+        r = run("-target=smach", "-Wno-error=python-syntax", script, "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("warning: userdata `n` of `t` is not a Python expression", r.stderr)
+        with open(out) as f:
+            self.assertIn("t.userdata.n = f(a=1, 2)\n", f.read())
+
     def test_render_keeps_the_json_key_order(self):
         self.write("Keys.tpl", "{% for k, v in d.items() %}{{ k }}={{ v }} {% endfor %}")
         context = self.write("ctx.json", '{"d": {"zeta": 1, "alpha": 2, "mid": 3}}')

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <iterator>
 
+#include "backends/target_code_check.h"
 #include "backends/template_check.h"
 #include "frontend/lower.h"
 #include "frontend/yaml_loader.h"
@@ -94,11 +95,13 @@ std::optional<ir::Module> Session::compileScript(const std::string& path,
   pipeline.print_ir = [this](std::string_view pass, const ir::Module& m) {
     std::cerr << "; IR after " << pass << "\n" << ir::printModule(m, sources_);
   };
-  // The template checks run after failed graph checks too: their errors are independent.
+  // The template and code checks run after failed graph checks too: their errors are
+  // independent.
   bool passes_ok = passes::runPipeline(*module, context, pipeline);
   bool templates_ok =
       backends::checkTemplates(*module, options_.target, options_.template_dirs, *diags_);
-  if (!passes_ok || !templates_ok) return std::nullopt;
+  bool code_ok = backends::checkTargetCode(*module, options_.target, *diags_);
+  if (!passes_ok || !templates_ok || !code_ok) return std::nullopt;
   return module;
 }
 

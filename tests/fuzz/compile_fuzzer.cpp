@@ -1,6 +1,6 @@
 // libFuzzer harness for the whole compile: bytes → script → frontend, then for each target
-// (ir, json, smach, dot, flexbe, cpp) on a copy of the module: passes → template checks →
-// emit, in memory, as the driver does it (nothing is written). Every second target also runs
+// (ir, json, smach, dot, flexbe, cpp) on a copy of the module: passes → template and code
+// checks → emit, in memory, as the driver does it (nothing is written). Every second target also runs
 // the optimisation passes. Any crash, hang, leak, sanitizer report or failed SMACHAC_CHECK is
 // a bug; diagnostics are the expected outcome for bad input, and they are printed in every
 // format.
@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "backends/target_code_check.h"
 #include "backends/targets.h"
 #include "backends/template_check.h"
 #include "frontend/lower.h"
@@ -27,7 +28,7 @@ void printEveryFormat(const DiagnosticEmitter& diags, const SourceManager& sourc
   }
 }
 
-/// Passes, template checks and emit for one target, on a copy of the lowered module.
+/// Passes, template and code checks and emit for one target, on a copy of the lowered module.
 void compileTo(const backends::Target& target, ir::Module module, SourceManager& sources,
                bool optimize) {
   DiagnosticEmitter diags;
@@ -36,7 +37,8 @@ void compileTo(const backends::Target& target, ir::Module module, SourceManager&
   pipeline.optimize = optimize;
   bool passes_ok = passes::runPipeline(module, context, pipeline);
   bool templates_ok = backends::checkTemplates(module, target.name, {}, diags);
-  if (passes_ok && templates_ok) {
+  bool code_ok = backends::checkTargetCode(module, target.name, diags);
+  if (passes_ok && templates_ok && code_ok) {
     backends::EmitOptions options;
     backends::EmitContext emit{sources, diags, options};
     target.emit(module, emit);

@@ -45,8 +45,10 @@ class SimBridgeTest(unittest.TestCase):
         self.assertFalse(self.robot.command_positions("left", [0.0, 1.5, 0, 0, 0, 0, 0], 0.3))
         self.assertTrue(self.robot.command_positions("left", UNTUCK, 0.3))
         self.robot.step(3000)
-        position = self.robot.joint_state("left")[0]
+        position, _velocity, effort = self.robot.joint_state("left")
         self.assertLess(max(abs(a - b) for a, b in zip(position, UNTUCK)), 1e-3)
+        self.assertLess(effort[1], -20.0)  # s1 holds the arm up against gravity
+        self.assertLess(abs(effort[6]), 0.1)  # w2 turns about a vertical axis
 
     def test_ik_solves_within_reach_only(self):
         solved, joints = self.robot.solve_ik("left", [0.7, 0.15, 0.02] + DOWN)

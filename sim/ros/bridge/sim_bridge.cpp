@@ -25,6 +25,8 @@ struct SmachacSimWorld {
   std::unique_ptr<sim::Ik> ik;
   std::unique_ptr<sim::Snapshotter> snapshotter;
   std::array<std::array<std::string, sim::kArmJointCount>, 2> jointNames;
+  std::array<std::array<int, sim::kArmJointCount>, 2> actuators;  // a joint's servo, or -1
+  std::array<std::array<int, sim::kArmJointCount>, 2> dofs;       // a joint's dof, or -1
 };
 
 namespace {
@@ -87,8 +89,15 @@ SmachacSimWorld* smachac_sim_open(const char* scene_path, char* error, int error
   auto handle = std::make_unique<SmachacSimWorld>();
   handle->world = std::move(loaded.world);
   handle->ik = std::make_unique<sim::Ik>(*handle->world);
-  for (int side = 0; side < 2; ++side) {
-    handle->jointNames[static_cast<size_t>(side)] = handle->world->limb(sideOf(side)).jointNames();
+  const mjModel* model = handle->world->model();
+  for (size_t side = 0; side < 2; ++side) {
+    handle->jointNames[side] = handle->world->limb(sideOf(static_cast<int>(side))).jointNames();
+    for (size_t i = 0; i < sim::kArmJointCount; ++i) {
+      const char* name = handle->jointNames[side][i].c_str();
+      handle->actuators[side][i] = mj_name2id(model, mjOBJ_ACTUATOR, name);
+      const int joint = mj_name2id(model, mjOBJ_JOINT, name);
+      handle->dofs[side][i] = joint < 0 ? -1 : model->jnt_dofadr[joint];
+    }
   }
   return handle.release();
 }
@@ -116,10 +125,12 @@ void smachac_sim_joint_state(const SmachacSimWorld* world, int side, double posi
   auto guard = w.lock();
   arrayTo(limb.jointPositions(), position);
   arrayTo(limb.jointVelocities(), velocity);
-  const auto& names = world->jointNames[side == 1 ? 1 : 0];
-  for (size_t i = 0; i < names.size(); ++i) {
-    const int actuator = mj_name2id(w.model(), mjOBJ_ACTUATOR, names[i].c_str());
-    effort[i] = actuator < 0 ? 0.0 : w.data()->actuator_force[actuator];
+  // The servo's force plus the gravity compensation applied with it: the joint's torque.
+  const auto& actuators = world->actuators[side == 1 ? 1 : 0];
+  const auto& dofs = world->dofs[side == 1 ? 1 : 0];
+  for (size_t i = 0; i < actuators.size(); ++i) {
+    effort[i] = (actuators[i] < 0 ? 0.0 : w.data()->actuator_force[actuators[i]]) +
+                (dofs[i] < 0 ? 0.0 : w.data()->qfrc_applied[dofs[i]]);
   }
 }
 

@@ -24,7 +24,8 @@ double smachac_sim_timestep(const SmachacSimWorld* world);
 /// Joint names of one arm ("left_s0" ...), written into names[7] (pointers valid as long as
 /// the world).
 void smachac_sim_joint_names(const SmachacSimWorld* world, int side, const char* names[7]);
-/// Positions (rad), velocities (rad/s) and servo efforts (N m) of one arm.
+/// Positions (rad), velocities (rad/s) and efforts (N m: servo and gravity compensation) of
+/// one arm.
 void smachac_sim_joint_state(const SmachacSimWorld* world, int side, double position[7],
                              double velocity[7], double effort[7]);
 /// Baxter's joint position mode: the arm approaches `goal` at `speed` times the joint velocity

@@ -8,6 +8,7 @@ at once, as the C++ robot states open them: pads that let go slowly drag the blo
 It reports `moving` from the command on until the ramp has ended and the fingers have stopped,
 and `gripping` once they have stopped on a body between both pads."""
 import json
+import threading
 
 import rospy
 from baxter_core_msgs.msg import EndEffectorCommand, EndEffectorProperties, EndEffectorState
@@ -28,6 +29,7 @@ class GripperTopics:
         self.status = {side: dict(calibrated=False, command="", sender="", sequence=0,
                                   action=None, missed=False, goal=100.0, commanded=100.0,
                                   reached=0.0) for side in SIDES}
+        self.lock = threading.Lock()  # commands (ROS threads) against the ramps (the loop)
         self.state = {}
         for side in SIDES:
             namespace = "/robot/end_effector/%s_gripper/" % side
@@ -48,6 +50,10 @@ class GripperTopics:
             controls_position=True, senses_position=True)
 
     def on_command(self, message, side):
+        with self.lock:
+            self.take_command(message, side)
+
+    def take_command(self, message, side):
         status = self.status[side]
         repeated = (message.sender, message.sequence) == (status["sender"], status["sequence"])
         status.update(command=message.command, sender=message.sender,
@@ -61,16 +67,22 @@ class GripperTopics:
         elif message.command == EndEffectorCommand.CMD_CLEAR_CALIBRATION:
             status["calibrated"] = False
         elif message.command == EndEffectorCommand.CMD_GO and status["calibrated"]:
-            self.go(side, self.position_argument(message.args))
+            position = self.position_argument(message.args)
+            if position is None:
+                rospy.logwarn("%s gripper: `go` without a numeric position: %r", side,
+                              message.args)
+            else:
+                self.go(side, position)
         elif message.command == EndEffectorCommand.CMD_STOP:
             self.go(side, self.robot.gripper_state(side)[0])
 
     @staticmethod
     def position_argument(args):
+        """The position (percent, clamped) of a `go` command's JSON arguments, or None."""
         try:
             return min(max(float(json.loads(args or "{}")["position"]), 0.0), 100.0)
         except (ValueError, KeyError, TypeError):
-            return 100.0
+            return None
 
     def go(self, side, percent):
         status = self.status[side]
@@ -94,12 +106,14 @@ class GripperTopics:
     def publish(self, stamp, seconds):
         """Advances the fingers' ramps by `seconds` and publishes both grippers' states."""
         for side in SIDES:
-            self.ramp(side, seconds)
-            position, moving, gripping, force = self.robot.gripper_state(side)
-            status = self.status[side]
-            moving = moving or status["commanded"] != status["goal"]
-            gripping = gripping and not moving
-            self.finish_action(side, status, moving, gripping)
+            with self.lock:
+                self.ramp(side, seconds)
+                position, moving, gripping, force = self.robot.gripper_state(side)
+                status = self.status[side]
+                moving = moving or status["commanded"] != status["goal"]
+                gripping = gripping and not moving
+                self.finish_action(side, status, moving, gripping)
+                status = dict(status)  # what is published, as it is now
             self.state[side].publish(EndEffectorState(
                 timestamp=stamp, id=HARDWARE_ID, enabled=TRUE,
                 calibrated=TRUE if status["calibrated"] else FALSE, ready=TRUE,

@@ -12,8 +12,9 @@ advances in step with them (command_pacer.py), as fast as the program keeps up (
 whose timeouts are in simulated time, leave a program time to connect to new topics. It
 prints "FIXTURE READY" once it serves everything. On SIGINT or SIGTERM it steps --settle
 simulated seconds, takes a last snapshot and prints the scene report of the C++ Baxter
-programs and the real-time factor (with --report-json, also as JSON with the block poses, the
-arms' joint positions and endpoint poses, and the fastest joint speed).
+programs and the real-time factor (with --report-json, also as JSON: the report, the time
+simulated until the stop and the wall time it took, the block poses, the arms' joint positions
+and endpoint poses, and the fastest joint speed after settling).
 """
 import argparse
 import json
@@ -106,12 +107,12 @@ class BaxterNode:
                          % (rtf, simulated, wall_seconds))
         sys.stdout.flush()
         if self.args.report_json:
-            self.write_json(report, rtf, wall_seconds)
+            self.write_json(report, simulated, wall_seconds)
 
-    def write_json(self, report, rtf, wall_seconds):
+    def write_json(self, report, simulated, wall_seconds):
         joint_speed = max(abs(v) for side in ("left", "right")
                           for v in self.robot.joint_state(side)[1])
-        description = {"report": report, "time": self.robot.time(), "real_time_factor": rtf,
+        description = {"report": report, "time": self.robot.time(), "simulated": simulated,
                        "wall_seconds": wall_seconds, "max_joint_speed": joint_speed,
                        "blocks": {name: self.robot.body_pose(name) for name in BLOCKS},
                        "endpoints": {side: self.robot.endpoint(side)[0]

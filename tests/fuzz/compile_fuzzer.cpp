@@ -1,9 +1,9 @@
 // libFuzzer harness for the whole compile: bytes → script → frontend, then for each target
 // (ir, json, smach, dot, flexbe, cpp) on a copy of the module: passes → template and code
-// checks → emit, in memory, as the driver does it (nothing is written). Every second target also runs
-// the optimisation passes. Any crash, hang, leak, sanitizer report or failed SMACHAC_CHECK is
-// a bug; diagnostics are the expected outcome for bad input, and they are printed in every
-// format.
+// checks → emit, in memory, as the driver does it (nothing is written). Every second target
+// also runs the optimisation passes. Any crash, hang, leak, sanitizer report or failed
+// SMACHAC_CHECK is a bug; diagnostics are the expected outcome for bad input, and they are
+// printed in every format.
 #include <cstddef>
 #include <cstdint>
 #include <sstream>

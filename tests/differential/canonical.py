@@ -1,6 +1,6 @@
 """What a run did, in a form that does not depend on the framework or on thread scheduling.
 
-A run is a list of enter/exit events (tests/ros/trace_protocol.py) and a result. Its canonical
+A run is a list of enter/exit events (tools/ros/trace_protocol.py) and a result. Its canonical
 form is one line per state execution, `PATH -> OUTCOME`, in the order the states were entered,
 a state's inner executions after it; the children of a Concurrence ran at the same time, so
 their executions (each with its own inner ones) are sorted by label. A state entered but never

@@ -30,7 +30,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(ROOT, "tests", "ros"))
+sys.path[:0] = [os.path.join(ROOT, "tests", "ros"), os.path.join(ROOT, "tools", "ros")]
 
 import canonical  # noqa: E402
 import known_differences  # noqa: E402

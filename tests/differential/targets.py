@@ -1,12 +1,12 @@
 """Compiling one script for a target and running it on that target's real runtime.
 
 Each target gives back a Run: the trace events and the result (top outcome, final userdata)
-in the protocol of tests/ros/trace_protocol.py, or the reason it did not run. Given
+in the protocol of tools/ros/trace_protocol.py, or the reason it did not run. Given
 preempt_after (seconds), each target's own preempt request reaches the running machine then.
-  smach   smachac -target=smach, then tests/ros/run_smach.py on the real SMACH
+  smach   smachac -target=smach, then tools/ros/run_smach.py on the real SMACH
           (preempt: request_preempt() on the top machine)
   flexbe  smachac -target=flexbe -flexbe-ros=1 into its behaviors package
-          (tests/ros/flexbe_package.py), then tests/ros/run_flexbe.py on the real flexbe_core
+          (tools/ros/flexbe_package.py), then tools/ros/run_flexbe.py on the real flexbe_core
           (with the session's master; preempt: FlexBE's preempt command topic)
   cpp     smachac -target=cpp, c++ against the runtime library, then the program with
           --seed=1 --trace=json --print-userdata (its JSON-lines trace read back;
@@ -21,7 +21,7 @@ import threading
 from ros_session import PYTHON
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROS_DIR = os.path.join(os.path.dirname(HERE), "ros")
+ROS_DIR = os.path.join(os.path.dirname(os.path.dirname(HERE)), "tools", "ros")
 TIMEOUT = 60
 
 

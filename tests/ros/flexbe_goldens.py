@@ -21,14 +21,17 @@ import json
 import os
 import sys
 
-import flexbe_package
-import trace_protocol
-from report import Report as LineReport
-from golden_case import cases_with_output
-from ros_session import PYTHON, run_test
-
 HERE = os.path.dirname(os.path.abspath(__file__))
-RUNNER = os.path.join(HERE, "run_flexbe.py")
+ROS_TOOLS = os.path.join(os.path.dirname(os.path.dirname(HERE)), "tools", "ros")
+sys.path.insert(0, ROS_TOOLS)
+
+import flexbe_package  # noqa: E402
+import trace_protocol  # noqa: E402
+from report import Report as LineReport  # noqa: E402
+from golden_case import cases_with_output  # noqa: E402
+from ros_session import PYTHON, run_test  # noqa: E402
+
+RUNNER = os.path.join(ROS_TOOLS, "run_flexbe.py")
 RUN_TIMEOUT = 30
 PARALLEL_RUNS = 2  # behaviors run at once, each its own process (most of a run is waiting)
 ROS2_SKIP = ("flexbe/ros2: the ROS 2 behaviors are checked structurally only "

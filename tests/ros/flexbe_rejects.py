@@ -14,12 +14,13 @@ import concurrent.futures
 import os
 import sys
 
-import flexbe_package
-from flexbe_goldens import PARALLEL_RUNS, Report, Run
-from ros_session import run_test
-
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "harness"))
+sys.path[:0] = [os.path.join(os.path.dirname(os.path.dirname(HERE)), "tools", "ros"),
+                os.path.join(os.path.dirname(HERE), "harness")]
+
+import flexbe_package  # noqa: E402
+from flexbe_goldens import PARALLEL_RUNS, Report, Run  # noqa: E402
+from ros_session import run_test  # noqa: E402
 from flexbe_structure_self_test import (  # noqa: E402
     STATES, main_with_pick, pick_block, simple, wait)
 

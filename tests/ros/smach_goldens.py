@@ -18,14 +18,15 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+ROS_TOOLS = os.path.join(os.path.dirname(os.path.dirname(HERE)), "tools", "ros")
+sys.path[:0] = [HERE, ROS_TOOLS]
 
 import trace_protocol  # noqa: E402
 from golden_case import smach_cases  # noqa: E402
 from report import Report  # noqa: E402
 from ros_session import PYTHON, RosSession, run_test  # noqa: E402
 
-RUN_SMACH = os.path.join(HERE, "run_smach.py")
+RUN_SMACH = os.path.join(ROS_TOOLS, "run_smach.py")
 FIXTURES = os.path.join(HERE, "fixtures")
 RUN_TIMEOUT = 40
 WORKERS = 2

@@ -27,7 +27,8 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
+ROS_TOOLS = os.path.join(os.path.dirname(os.path.dirname(HERE)), "tools", "ros")
+sys.path[:0] = [HERE, ROS_TOOLS]
 
 import trace_protocol  # noqa: E402
 from live_run import LiveRun  # noqa: E402
@@ -35,7 +36,7 @@ from report import Deferred, Report  # noqa: E402
 from ros_session import PYTHON, RosSession, Unavailable  # noqa: E402
 
 SKIPPED = 77
-RUN_SMACH = os.path.join(HERE, "run_smach.py")
+RUN_SMACH = os.path.join(ROS_TOOLS, "run_smach.py")
 CASES = os.path.join(HERE, "cases")
 FIXTURES = os.path.join(HERE, "fixtures")
 

@@ -4,7 +4,8 @@ the simulated Baxter over ROS (tools/baxter-ros-run), beside which the C++ progr
 (sim_experiments_bench.py) compare.
 
 usage: sim_ros_bench.py [RESULTS_DIR [BUILD_DIR]]
-The build tree is BUILD_DIR, else $SMACHAC_BENCH_BUILD (bench/run.sh sets it), else build-bench.
+The build tree is BUILD_DIR, else $SMACHAC_BENCH_BUILD (bench/run.sh sets it), else build-bench;
+the ROS overlay is its own, else the test tree's (build/ros-overlay, which `make test` builds).
 Each experiment runs three times per target; the best run by wall time is shown: the simulated
 time of the machine's run, the node's wall time over it, and their ratio. Every run must end
 `outcome: succeeded`; where ROS or a framework is not available the target is skipped, saying
@@ -26,13 +27,20 @@ class Skip(Exception):
     pass
 
 
+def overlay_of(build):
+    for tree in (build, ROOT / "build"):
+        if (tree / "ros-overlay" / "overlay.json").exists():
+            return ["--overlay", str(tree / "ros-overlay")]
+    return []
+
+
 def run_once(build, target, experiment):
     """(simulated seconds, wall seconds) of one run, from the node's report."""
     with tempfile.TemporaryDirectory() as work:
         report = os.path.join(work, "report.json")
         result = subprocess.run(
             [sys.executable, str(ROOT / "tools" / "baxter-ros-run"), "--target", target,
-             "--build", str(build), "--report-json", report,
+             "--build", str(build), "--report-json", report, *overlay_of(build),
              str(ROOT / "examples" / "baxter" / (experiment + ".yml"))],
             capture_output=True, text=True, timeout=900)
         if result.returncode == SKIPPED:

@@ -2,11 +2,14 @@
 """Builds the ROS 1 test overlay: the frameworks Debian does not package, their messages, and
 the packages generated code loads, in one folder.
 
-  overlay.py build DIR     (re)build the overlay in DIR; prints what it took and what it skipped
+  overlay.py build DIR [SOURCES]
+      (re)build the overlay in DIR; prints what it took and what it skipped
 
 Sources come from an installed ROS where it has them (a module that Debian's python3 can
-already import is used as installed), else from the upstream sources beside the project
-(`../shared/vendor`, or $SMACHAC_ROS_SOURCES). They are copied into DIR/src, patched there
+already import is used as installed), else from a folder of unmodified upstream sources
+(SOURCES, else $SMACHAC_ROS_SOURCES; the ctest ros/overlay names the one beside the project),
+holding executive_smach, flexbe_behavior_engine, baxter_interface, baxter_common,
+gazebo_ros_pkgs and control_msgs as their repositories lay them out. They are copied into DIR/src, patched there
 when they need it, and their .msg/.srv/.action files are turned into Python with genpy.
 DIR/overlay.json records the environment (PYTHONPATH, ROS_PACKAGE_PATH) and which frameworks
 are available, with the reason when one is not; `ros_session.py` reads it.
@@ -19,8 +22,6 @@ import shutil
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-PROJECT = os.path.dirname(os.path.dirname(HERE))
 PYTHON = "/usr/bin/python3"  # Debian's: the only interpreter that sees Debian's rospy
 GENMSG = "/usr/lib/genpy/genmsg_py.py"
 GENSRV = "/usr/lib/genpy/gensrv_py.py"
@@ -55,11 +56,6 @@ PATCHES = {
 }
 
 
-def sources_root():
-    return os.environ.get("SMACHAC_ROS_SOURCES",
-                          os.path.join(os.path.dirname(PROJECT), "shared", "vendor"))
-
-
 def package_xml(name):
     return ('<?xml version="1.0"?>\n<package format="2"><name>%s</name><version>0.0.0</version>'
             '<description>smachac test overlay package</description>'
@@ -78,8 +74,9 @@ def installed(module):
 
 
 class Overlay:
-    def __init__(self, root):
+    def __init__(self, root, sources=None):
         self.root = root
+        self.sources = sources or os.environ.get("SMACHAC_ROS_SOURCES")
         self.src = os.path.join(root, "src")
         self.gen = os.path.join(root, "gen")
         self.python_path = [self.gen]
@@ -107,7 +104,10 @@ class Overlay:
         for package, path, module in packages:
             if installed(module):
                 continue
-            source = os.path.join(sources_root(), (folder + "/" if folder else "") + path)
+            if not self.sources:
+                return ("%s is not installed and no upstream sources were given "
+                        "($SMACHAC_ROS_SOURCES)" % package)
+            source = os.path.join(self.sources, (folder + "/" if folder else "") + path)
             if not os.path.isdir(source):
                 return "%s is not installed and its sources are not at %s" % (package, source)
             target = os.path.join(self.src, package)
@@ -182,10 +182,11 @@ def run(argv):
 
 
 def main():
-    if len(sys.argv) != 3 or sys.argv[1] != "build":
+    if len(sys.argv) not in (3, 4) or sys.argv[1] != "build":
         print(__doc__.strip(), file=sys.stderr)
         return 2
-    description = Overlay(os.path.abspath(sys.argv[2])).build()
+    sources = os.path.abspath(sys.argv[3]) if len(sys.argv) == 4 else None
+    description = Overlay(os.path.abspath(sys.argv[2]), sources).build()
     if description["problem"]:
         print("overlay: not built: " + description["problem"])
         return 0

@@ -19,6 +19,9 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "tests", "ros"))
+
+from report import Report  # noqa: E402
 RUNNER = os.path.join(ROOT, "tools", "baxter-ros-run")
 EXAMPLES = os.path.join(ROOT, "examples", "baxter")
 SKIPPED = 77
@@ -113,19 +116,12 @@ def stack_errors(result):
     return horizontal(upper, lower), abs(upper[2] - lower[2] - BLOCK_SIZE)
 
 
-class Checks:
-    """Collects failed checks; prints `ok`/`FAIL` lines and the closing count."""
-
-    def __init__(self):
-        self.passed = 0
-        self.failed = 0
+class Checks(Report):
+    """The ros tests' report (`ok` / `FAIL` lines, the closing count), fed by conditions."""
 
     def check(self, condition, description):
-        print("%s %s" % ("ok  " if condition else "FAIL", description), flush=True)
-        if condition:
-            self.passed += 1
-        else:
-            self.failed += 1
+        case, _, what = description.partition(": ")
+        (self.ok if condition else self.fail)(case, what)
         return condition
 
     def run_ended(self, label, result, outcome):
@@ -136,8 +132,7 @@ class Checks:
                           % (label, outcome, result.outcome))
 
     def exit_code(self):
-        print("%d passed, %d failed" % (self.passed, self.failed))
-        return 0 if self.failed == 0 else 1
+        return self.close()
 
 
 def main_with_skip(body):

@@ -9,7 +9,8 @@ unchanged. Run it with Debian's /usr/bin/python3 and a ROS master:
 It sets /use_sim_time and publishes /clock. While a program streams commands, simulated time
 advances in step with them (command_pacer.py), as fast as the program keeps up (at most
 --max-rtf times real time); otherwise at --idle-rtf times real time, so that the SDK's waits,
-whose timeouts are in simulated time, leave a program time to connect to new topics. It
+whose timeouts are in simulated time, leave a program time to connect to new topics; and while
+a subscriber the master lists has not connected, time stands still (connection_gate.py). It
 prints "FIXTURE READY" once it serves everything. On SIGINT or SIGTERM it steps --settle
 simulated seconds, takes a last snapshot and prints the scene report of the C++ Baxter
 programs and the real-time factor (with --report-json, also as JSON: the report, the time
@@ -28,6 +29,7 @@ import rosgraph
 import rospy
 from rosgraph_msgs.msg import Clock
 
+from connection_gate import ConnectionGate
 from gazebo_services import GazeboServices
 from gripper_topics import GripperTopics
 from ik_service import IkService
@@ -67,15 +69,25 @@ class BaxterNode:
                          TrajectoryAction(robot, self.topics))
         self.steps_per_tick = max(1, int(round(TICK / robot.timestep)))
         self.stop = threading.Event()
+        self.gate = ConnectionGate(rospy.get_name(), {
+            publisher.resolved_name: publisher
+            for publisher in [self.clock, self.topics.state, self.topics.joints,
+                              *self.topics.endpoints.values(), *self.grippers.state.values(),
+                              *self.grippers.property_topics.values()]})
 
     def run(self):
-        """Steps and publishes until shutdown; returns the wall seconds spent."""
-        began = time.monotonic()
+        """Steps and publishes until shutdown; returns the wall seconds spent from the first
+        program's connection on."""
         tick = 0
         self.publish(tick)  # /clock starts: nodes with use_sim_time wait for it
         print("FIXTURE READY", flush=True)
+        while not (self.stop.is_set() or rospy.is_shutdown() or self.gate.subscribed("/clock")):
+            time.sleep(0.01)  # time starts when the first program has connected
+            self.publish(tick)
+        began = time.monotonic()
         while not self.stop.is_set() and not rospy.is_shutdown():
             tick_began = time.monotonic()
+            self.gate.wait()
             streaming = self.topics.pacer.wait_for_due_commands(self.robot.time())
             self.robot.step(self.steps_per_tick)
             tick += 1

@@ -31,13 +31,14 @@ class GripperTopics:
                                   reached=0.0) for side in SIDES}
         self.lock = threading.Lock()  # commands (ROS threads) against the ramps (the loop)
         self.state = {}
+        self.property_topics = {}
         for side in SIDES:
             namespace = "/robot/end_effector/%s_gripper/" % side
             self.state[side] = rospy.Publisher(namespace + "state", EndEffectorState,
                                                queue_size=1)
-            properties = rospy.Publisher(namespace + "properties", EndEffectorProperties,
-                                         queue_size=1, latch=True)
-            properties.publish(self.properties())
+            self.property_topics[side] = rospy.Publisher(
+                namespace + "properties", EndEffectorProperties, queue_size=1, latch=True)
+            self.property_topics[side].publish(self.properties())
             rospy.Subscriber(namespace + "command", EndEffectorCommand, self.on_command, side)
 
     @staticmethod

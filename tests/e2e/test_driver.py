@@ -1,8 +1,10 @@
 """The smachac driver as a user runs it: exit codes, atomic output, limits, determinism."""
 import json
 import os
+import stat
 import subprocess
 import tempfile
+import threading
 import unittest
 
 SMACHAC = os.environ["SMACHAC"]
@@ -41,6 +43,27 @@ class ExitCodes(TempDirTest):
         self.assertEqual(r.stdout, "")
         with open(out) as f:
             self.assertTrue(f.read().startswith("base t template=Base @1:1\n"))
+
+    def test_output_into_a_fifo_keeps_the_fifo(self):
+        # `-o /dev/null` as root once replaced the device with a file: a destination that is no
+        # regular file is written into, not renamed over (a FIFO shows it without touching /dev).
+        script = self.write("ok.yml", VALID)
+        fifo = os.path.join(self.dir, "out.fifo")
+        os.mkfifo(fifo)
+        received = []
+
+        def read():
+            with open(fifo) as f:
+                received.append(f.read())
+
+        reader = threading.Thread(target=read)
+        reader.start()
+        r = run("-target=ir", script, "-o", fifo)
+        reader.join(timeout=30)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertTrue(stat.S_ISFIFO(os.stat(fifo).st_mode))
+        self.assertTrue(received and received[0].startswith("base t template=Base @1:1\n"))
+        self.assertEqual(sorted(os.listdir(self.dir)), ["ok.yml", "out.fifo"])
 
     def test_double_dash_spelling(self):
         script = self.write("ok.yml", VALID)

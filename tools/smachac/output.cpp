@@ -29,14 +29,43 @@ std::optional<std::string> writeAll(int fd, const std::string& content) {
   return std::nullopt;
 }
 
-/// A destination's content written to a temporary file next to it, not yet renamed.
+/// A destination's content written to a temporary file next to it, not yet renamed; or, for
+/// a destination that exists and is no regular file (`/dev/null`, a FIFO), the content to
+/// write into it: renaming over a device would replace it with a file.
 struct StagedFile {
   std::string path;
-  std::string temporary;
+  std::string temporary;  ///< empty: written directly
+  const std::string* direct_content = nullptr;
 };
+
+bool isSpecialFile(const std::string& path) {
+  struct stat info {};
+  return ::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode);
+}
+
+std::optional<std::string> writeDirectly(const StagedFile& file) {
+  int fd = ::open(file.path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) return "cannot write `" + file.path + "`: " + errnoText();
+  std::optional<std::string> error = writeAll(fd, *file.direct_content);
+  if (::close(fd) != 0 && !error) error = errnoText();
+  if (error) return "cannot write `" + file.path + "`: " + *error;
+  return std::nullopt;
+}
+
+std::optional<std::string> commit(const StagedFile& file) {
+  if (file.direct_content) return writeDirectly(file);
+  if (::rename(file.temporary.c_str(), file.path.c_str()) != 0) {
+    return "cannot write `" + file.path + "`: " + errnoText();
+  }
+  return std::nullopt;
+}
 
 std::optional<std::string> stage(const std::string& path, const std::string& content,
                                  StagedFile& staged) {
+  if (isSpecialFile(path)) {
+    staged = {path, "", &content};
+    return std::nullopt;
+  }
   fs::path target(path);
   fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::string pattern = (dir / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
@@ -56,7 +85,9 @@ std::optional<std::string> stage(const std::string& path, const std::string& con
 }
 
 void discard(const std::vector<StagedFile>& staged) {
-  for (const StagedFile& file : staged) ::unlink(file.temporary.c_str());
+  for (const StagedFile& file : staged) {
+    if (!file.temporary.empty()) ::unlink(file.temporary.c_str());
+  }
 }
 
 }  // namespace
@@ -83,8 +114,7 @@ std::optional<std::string> writeFilesAtomically(
     staged.push_back(std::move(file));
   }
   for (size_t i = 0; i < staged.size(); ++i) {
-    if (::rename(staged[i].temporary.c_str(), staged[i].path.c_str()) != 0) {
-      std::string error = "cannot write `" + staged[i].path + "`: " + errnoText();
+    if (std::optional<std::string> error = commit(staged[i])) {
       discard({staged.begin() + static_cast<std::ptrdiff_t>(i), staged.end()});
       return error;
     }

@@ -1,6 +1,7 @@
 // Writing generated files atomically: the content goes to a temporary file next to the
 // destination, which is then renamed over it. A failed run never leaves a partial file and
-// never clobbers an existing one.
+// never clobbers an existing one. A destination that exists and is no regular file
+// (`/dev/null`, a FIFO) is written into directly: renaming over it would replace it by a file.
 #pragma once
 
 #include <optional>

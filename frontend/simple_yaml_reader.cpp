@@ -182,10 +182,24 @@ class SimpleYamlReader {
     return inlineValue(col);
   }
 
+  /// `!expr` and a quoted scalar on its line (other tags and forms: yaml-cpp), reported at
+  /// the tag as yaml-cpp reports it.
+  bool portableExpr() {
+    if (cursor_.text.substr(cursor_.pos, kPortableExprTag.size() + 1) != "!expr ") return false;
+    YamlMark tag = cursor_.mark();
+    cursor_.pos += kPortableExprTag.size();
+    cursor_.skipSpaces();
+    YamlScalar s;
+    if ((cursor_.peek() != '"' && cursor_.peek() != '\'') || !scanQuoted(cursor_, s)) return false;
+    builder_.onScalar(tag, kPortableExprTag, 0, s.text);
+    return true;
+  }
+
   /// A value on the line of its key or `-`; `limit` is the column of the collection it is in.
   bool inlineValue(int limit) {
     char ch = cursor_.peek();
     if (ch == '[' || ch == '{') return flowNode() && lineEnd(kNoLimit);
+    if (ch == '!') return portableExpr() && lineEnd(kNoLimit);
     YamlScalar s;
     if (ch == '"' || ch == '\'') {
       if (!scanQuoted(cursor_, s)) return false;
@@ -204,6 +218,7 @@ class SimpleYamlReader {
     char ch = cursor_.peek();
     if (ch == '[') return flowSequence();
     if (ch == '{') return flowMap();
+    if (ch == '!') return portableExpr();
     YamlScalar s;
     if (ch == '"' || ch == '\'') {
       if (!scanQuoted(cursor_, s)) return false;
@@ -281,7 +296,7 @@ class SimpleYamlReader {
 
 std::optional<ir::Value> readSimpleYaml(uint32_t file, std::string_view text) {
   DiagnosticEmitter unused;  // the builder gives up instead of reporting
-  YamlValueBuilder builder(file, unused, YamlProblems::GiveUp);
+  YamlValueBuilder builder(file, unused, YamlProblems::GiveUp, text);
   if (!SimpleYamlReader(text, builder).read() || builder.gaveUp()) return std::nullopt;
   return builder.take();
 }

@@ -84,7 +84,7 @@ SourceLoc markLoc(uint32_t file, const YAML::Mark& mark) {
 std::optional<ir::Value> buildYamlValueWithYamlCpp(uint32_t file, std::string_view text,
                                                    DiagnosticEmitter& diags) {
   std::istringstream stream{std::string(text)};
-  YamlValueBuilder builder(file, diags, YamlProblems::Report);
+  YamlValueBuilder builder(file, diags, YamlProblems::Report, text);
   YamlCppEvents events(builder);
   try {
     YAML::Parser parser(stream);

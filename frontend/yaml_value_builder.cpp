@@ -65,9 +65,20 @@ void YamlValueBuilder::onScalar(YamlMark mark, std::string_view tag, uint64_t an
     if (charge(1, l)) acceptKey(stack_[depth_ - 1], value, loc(mark, value.size()));
     return;
   }
+  if (tag == kPortableExprTag) {
+    finish(portableExpr(mark, value), anchor, false);
+    return;
+  }
   ScalarResult r = resolveScalar(value, quoted ? ScalarStyle::Quoted : ScalarStyle::Plain, tag, l);
   if (r.int_overflow) report(DiagKind::IntegerOutOfRange, l, value);
   finish(std::move(r.value), anchor, false);
+}
+
+ir::Value YamlValueBuilder::portableExpr(YamlMark mark, std::string_view value) {
+  std::optional<ExprScalarError> error;
+  ir::Value v = exprs_.read(mark.line, mark.column, value, error);
+  if (error) report(DiagKind::ExprSyntax, error->loc, error->message);
+  return v;
 }
 
 void YamlValueBuilder::onSequenceStart(YamlMark mark, uint64_t anchor) {

@@ -13,6 +13,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "frontend/expr_scalar.h"
 #include "ir/support/diagnostic_emitter.h"
 #include "ir/value.h"
 
@@ -37,8 +38,10 @@ enum class YamlProblems {
 
 class YamlValueBuilder {
  public:
-  YamlValueBuilder(uint32_t file, DiagnosticEmitter& diags, YamlProblems policy)
-      : file_(file), diags_(diags), policy_(policy) {}
+  /// `document` is the text the events come from (it locates `!expr` scalars).
+  YamlValueBuilder(uint32_t file, DiagnosticEmitter& diags, YamlProblems policy,
+                   std::string_view document = {})
+      : file_(file), diags_(diags), policy_(policy), exprs_(file, document) {}
 
   /// The document, or nullopt after an error that leaves no usable document.
   std::optional<ir::Value> take();
@@ -75,6 +78,7 @@ class YamlValueBuilder {
   };
 
   SourceLoc loc(YamlMark mark, size_t length = 1) const;
+  ir::Value portableExpr(YamlMark mark, std::string_view value);
   template <typename... Args>
   void report(DiagKind kind, SourceLoc where, const Args&... args);
   void note(SourceLoc where, std::string message);
@@ -99,6 +103,7 @@ class YamlValueBuilder {
   size_t alias_bytes_ = 0;
   bool aborted_ = false;
   bool gave_up_ = false;
+  ExprScalarReader exprs_;
 };
 
 }  // namespace smachac::frontend

@@ -56,6 +56,7 @@ class JsonWriter {
       case ValueKind::String:
         return v.asString();
       case ValueKind::Expression:
+        if (v.asPortable()) return {{"portable_expression", v.asExpression().code}};
         return {{"expression", v.asExpression().code}};
       case ValueKind::List: {
         Json out = Json::array();

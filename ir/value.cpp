@@ -3,6 +3,8 @@
 
 #include <fmt/core.h>
 
+#include "ir/expr.h"
+
 namespace smachac::ir {
 
 std::string_view valueKindName(ValueKind kind) {
@@ -33,8 +35,18 @@ Value Value::integer(int64_t i, SourceLoc loc) { return Value{i, loc}; }
 Value Value::real(double d, SourceLoc loc) { return Value{d, loc}; }
 Value Value::string(std::string s, SourceLoc loc) { return Value{std::move(s), loc}; }
 Value Value::expression(std::string code, SourceLoc loc) {
-  return Value{Expression{std::move(code)}, loc};
+  return Value{Expression{std::move(code), nullptr}, loc};
 }
+Value Value::portable(std::shared_ptr<const PortableExpr> expr, SourceLoc loc) {
+  std::string text = expr->text;
+  return Value{Expression{std::move(text), std::move(expr)}, loc};
+}
+
+const PortableExpr* Value::asPortable() const {
+  const Expression* e = std::get_if<Expression>(&data);
+  return e ? e->portable.get() : nullptr;
+}
+
 Value Value::list(List items, SourceLoc loc) { return Value{std::move(items), loc}; }
 Value Value::map(Map entries, SourceLoc loc) { return Value{std::move(entries), loc}; }
 

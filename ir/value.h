@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -25,10 +26,17 @@ struct MapEntry;
 using List = std::vector<Value>;
 using Map = std::vector<MapEntry>;
 
-/// Target code written in backticks in the script (`lambda ud: ud.x`), without the backticks.
+struct PortableExpr;
+
+/// Target code written in backticks in the script (`lambda ud: ud.x`), without the backticks;
+/// or a portable expression (`!expr 'x + 1'`, ir/expr.h): then `code` is its text as written
+/// and `portable` its tree, until a backend replaces it with target code.
 struct Expression {
   std::string code;
-  friend bool operator==(const Expression&, const Expression&) = default;
+  std::shared_ptr<const PortableExpr> portable;
+  friend bool operator==(const Expression& a, const Expression& b) {
+    return a.code == b.code && (a.portable == nullptr) == (b.portable == nullptr);
+  }
 };
 
 struct Value {
@@ -47,6 +55,7 @@ struct Value {
   static Value real(double d, SourceLoc loc = {});
   static Value string(std::string s, SourceLoc loc = {});
   static Value expression(std::string code, SourceLoc loc = {});
+  static Value portable(std::shared_ptr<const PortableExpr> expr, SourceLoc loc = {});
   static Value list(List items, SourceLoc loc = {});
   static Value map(Map entries, SourceLoc loc = {});
 
@@ -61,6 +70,8 @@ struct Value {
   double asFloat() const { return std::get<double>(data); }
   const std::string& asString() const { return std::get<std::string>(data); }
   const Expression& asExpression() const { return std::get<Expression>(data); }
+  /// The tree of a portable expression (`!expr`), or nullptr for any other value.
+  const PortableExpr* asPortable() const;
   const List& asList() const { return std::get<List>(data); }
   List& asList() { return std::get<List>(data); }
   const Map& asMap() const { return std::get<Map>(data); }

@@ -61,6 +61,7 @@ std::string formatValue(const Value& value) {
     case ValueKind::String:
       return (value.forced_string ? "!str " : "") + quoteString(value.asString());
     case ValueKind::Expression:
+      if (value.asPortable()) return "!expr " + quoteString(value.asExpression().code);
       return "`" + value.asExpression().code + "`";
     case ValueKind::List: {
       std::string out = "[";

@@ -44,6 +44,8 @@ constexpr PassInfo kPasses[] = {
     check("check-userdata-usage", "userdata values overwritten or never read", checkUserdataUsage),
     check("check-userdata-types", "literal types of keys copied across containers",
           checkUserdataTypes),
+    check("check-expressions", "portable expressions (`!expr`): names, types, where they stand",
+          checkExpressions),
 
     // Transforms: only with PipelineOptions::optimize, and only on a module without errors
     // (warnings, and errors downgraded with -Wno-error=, are fine: unresolved targets and

@@ -13,5 +13,6 @@ void checkReachability(const ir::Module& module, PassContext& context);
 void checkUserdataFlow(const ir::Module& module, PassContext& context);
 void checkUserdataUsage(const ir::Module& module, PassContext& context);
 void checkUserdataTypes(const ir::Module& module, PassContext& context);
+void checkExpressions(const ir::Module& module, PassContext& context);
 
 }  // namespace smachac::passes

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <iterator>
 
+#include "backends/expr/lower_expressions.h"
 #include "backends/target_code_check.h"
 #include "backends/template_check.h"
 #include "frontend/lower.h"
@@ -98,6 +99,7 @@ std::optional<ir::Module> Session::compileScript(const std::string& path,
   // The template and code checks run after failed graph checks too: their errors are
   // independent.
   bool passes_ok = passes::runPipeline(*module, context, pipeline);
+  backends::expr::lowerPortableExpressions(*module, options_.target);
   bool templates_ok =
       backends::checkTemplates(*module, options_.target, options_.template_dirs, *diags_);
   bool code_ok = backends::checkTargetCode(*module, options_.target, *diags_);

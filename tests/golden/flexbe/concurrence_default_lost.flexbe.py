@@ -117,13 +117,13 @@ class LostSM(Behavior):
 
         with _sm_con:
             # x:30 y:40
-            OperatableStateMachine.add('A', RandomOutcomeState(outcomes=['a1', 'a2', 'a3', 'a4', 'a5']), transitions={'a1': 'all_done', 'a2': 'broken', 'a3': 'broken', 'a4': 'broken', 'a5': 'broken'}, autonomy={'a1': Autonomy.Off, 'a2': Autonomy.Off, 'a3': Autonomy.Off, 'a4': Autonomy.Off, 'a5': Autonomy.Off})
+            OperatableStateMachine.add('A', RandomOutcomeState(outcomes=['a1', 'a2', 'a3', 'a4', 'a5'], callbacks={}, input_keys=[], output_keys=['outcome']), transitions={'a1': 'all_done', 'a2': 'broken', 'a3': 'broken', 'a4': 'broken', 'a5': 'broken'}, autonomy={'a1': Autonomy.Off, 'a2': Autonomy.Off, 'a3': Autonomy.Off, 'a4': Autonomy.Off, 'a5': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('B', RandomOutcomeState(outcomes=['b1', 'b2', 'b3', 'b4', 'b5']), transitions={'b1': 'all_done', 'b2': 'broken', 'b3': 'broken', 'b4': 'broken', 'b5': 'broken'}, autonomy={'b1': Autonomy.Off, 'b2': Autonomy.Off, 'b3': Autonomy.Off, 'b4': Autonomy.Off, 'b5': Autonomy.Off})
+            OperatableStateMachine.add('B', RandomOutcomeState(outcomes=['b1', 'b2', 'b3', 'b4', 'b5'], callbacks={}, input_keys=[], output_keys=['outcome']), transitions={'b1': 'all_done', 'b2': 'broken', 'b3': 'broken', 'b4': 'broken', 'b5': 'broken'}, autonomy={'b1': Autonomy.Off, 'b2': Autonomy.Off, 'b3': Autonomy.Off, 'b4': Autonomy.Off, 'b5': Autonomy.Off})
 
             # x:430 y:40
-            OperatableStateMachine.add('C', RandomOutcomeState(outcomes=['c1', 'c2', 'c3', 'c4', 'c5']), transitions={'c1': 'all_done', 'c2': 'broken', 'c3': 'broken', 'c4': 'broken', 'c5': 'broken'}, autonomy={'c1': Autonomy.Off, 'c2': Autonomy.Off, 'c3': Autonomy.Off, 'c4': Autonomy.Off, 'c5': Autonomy.Off})
+            OperatableStateMachine.add('C', RandomOutcomeState(outcomes=['c1', 'c2', 'c3', 'c4', 'c5'], callbacks={}, input_keys=[], output_keys=['outcome']), transitions={'c1': 'all_done', 'c2': 'broken', 'c3': 'broken', 'c4': 'broken', 'c5': 'broken'}, autonomy={'c1': Autonomy.Off, 'c2': Autonomy.Off, 'c3': Autonomy.Off, 'c4': Autonomy.Off, 'c5': Autonomy.Off})
 
         with _state_machine:
             # x:630 y:40
@@ -145,16 +145,28 @@ from flexbe_core import EventState, Logger
 
 class RandomOutcomeState(EventState):
     """
-    Returns one of its outcomes, chosen at random.
+    Runs its callbacks on the userdata, in order, then returns one of its
+    outcomes chosen at random and stores it in `outcome`.
 
-    -- outcomes list    The outcomes to choose from.
+    -- outcomes     list    The outcomes to choose from.
+    -- callbacks    dict    Output key -> function of the userdata.
+    -- input_keys   list    The userdata keys the callbacks read.
+    -- output_keys  list    The userdata keys written, `outcome` included.
 
-    <= (any)            One of the outcomes.
+    #> outcome      str     The chosen outcome.
+
+    <= (any)                One of the outcomes.
     """
 
-    def __init__(self, outcomes):
-        super(RandomOutcomeState, self).__init__(outcomes=outcomes)
+    def __init__(self, outcomes, callbacks, input_keys, output_keys):
+        super(RandomOutcomeState, self).__init__(outcomes=outcomes, input_keys=input_keys,
+                                                 output_keys=output_keys)
+        self._callbacks = callbacks
 
     def execute(self, userdata):
         import random
-        return random.choice(sorted(self._outcomes))
+        for key, callback in self._callbacks.items():
+            userdata[key] = callback(userdata)
+        outcome = random.choice(sorted(self._outcomes))
+        userdata.outcome = outcome
+        return outcome

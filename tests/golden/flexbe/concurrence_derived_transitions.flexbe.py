@@ -118,7 +118,7 @@ class DerivedSM(Behavior):
 
         with _sm_branch:
             # x:630 y:40
-            OperatableStateMachine.add('STEP', RandomOutcomeState(outcomes=['done', 'bad', 'preempted']), transitions={'bad': 'failed', 'done': 'finished', 'preempted': 'preempted'}, autonomy={'bad': Autonomy.Off, 'done': Autonomy.Off, 'preempted': Autonomy.Off})
+            OperatableStateMachine.add('STEP', RandomOutcomeState(outcomes=['done', 'bad', 'preempted'], callbacks={}, input_keys=[], output_keys=['outcome']), transitions={'bad': 'failed', 'done': 'finished', 'preempted': 'preempted'}, autonomy={'bad': Autonomy.Off, 'done': Autonomy.Off, 'preempted': Autonomy.Off})
 
 
 
@@ -130,7 +130,7 @@ class DerivedSM(Behavior):
             OperatableStateMachine.add('WAIT', WaitState(wait_time=1), transitions={'done': 'all_done'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b']), transitions={'a': 'all_done', 'b': 'broken'}, autonomy={'a': Autonomy.Off, 'b': Autonomy.Off})
+            OperatableStateMachine.add('RANDOM', RandomOutcomeState(outcomes=['a', 'b'], callbacks={}, input_keys=[], output_keys=['outcome']), transitions={'a': 'all_done', 'b': 'broken'}, autonomy={'a': Autonomy.Off, 'b': Autonomy.Off})
 
             # x:430 y:40
             OperatableStateMachine.add('WAIT_MORE', WaitState(wait_time=2), transitions={'done': 'broken'}, autonomy={'done': Autonomy.Off})
@@ -158,16 +158,28 @@ from flexbe_core import EventState, Logger
 
 class RandomOutcomeState(EventState):
     """
-    Returns one of its outcomes, chosen at random.
+    Runs its callbacks on the userdata, in order, then returns one of its
+    outcomes chosen at random and stores it in `outcome`.
 
-    -- outcomes list    The outcomes to choose from.
+    -- outcomes     list    The outcomes to choose from.
+    -- callbacks    dict    Output key -> function of the userdata.
+    -- input_keys   list    The userdata keys the callbacks read.
+    -- output_keys  list    The userdata keys written, `outcome` included.
 
-    <= (any)            One of the outcomes.
+    #> outcome      str     The chosen outcome.
+
+    <= (any)                One of the outcomes.
     """
 
-    def __init__(self, outcomes):
-        super(RandomOutcomeState, self).__init__(outcomes=outcomes)
+    def __init__(self, outcomes, callbacks, input_keys, output_keys):
+        super(RandomOutcomeState, self).__init__(outcomes=outcomes, input_keys=input_keys,
+                                                 output_keys=output_keys)
+        self._callbacks = callbacks
 
     def execute(self, userdata):
         import random
-        return random.choice(sorted(self._outcomes))
+        for key, callback in self._callbacks.items():
+            userdata[key] = callback(userdata)
+        outcome = random.choice(sorted(self._outcomes))
+        userdata.outcome = outcome
+        return outcome

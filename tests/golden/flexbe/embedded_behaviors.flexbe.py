@@ -337,7 +337,7 @@ class GripSM(Behavior):
             OperatableStateMachine.add('CLOSE', WaitState(wait_time=self.force), transitions={'done': 'TRY'}, autonomy={'done': Autonomy.Off})
 
             # x:230 y:40
-            OperatableStateMachine.add('TRY', RandomOutcomeState(outcomes=['closed', 'open']), transitions={'closed': 'closed', 'open': 'open'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off})
+            OperatableStateMachine.add('TRY', RandomOutcomeState(outcomes=['closed', 'open'], callbacks={}, input_keys=[], output_keys=['outcome']), transitions={'closed': 'closed', 'open': 'open'}, autonomy={'closed': Autonomy.Off, 'open': Autonomy.Off})
 
         return _state_machine
 
@@ -355,19 +355,31 @@ from flexbe_core import EventState, Logger
 
 class RandomOutcomeState(EventState):
     """
-    Returns one of its outcomes, chosen at random.
+    Runs its callbacks on the userdata, in order, then returns one of its
+    outcomes chosen at random and stores it in `outcome`.
 
-    -- outcomes list    The outcomes to choose from.
+    -- outcomes     list    The outcomes to choose from.
+    -- callbacks    dict    Output key -> function of the userdata.
+    -- input_keys   list    The userdata keys the callbacks read.
+    -- output_keys  list    The userdata keys written, `outcome` included.
 
-    <= (any)            One of the outcomes.
+    #> outcome      str     The chosen outcome.
+
+    <= (any)                One of the outcomes.
     """
 
-    def __init__(self, outcomes):
-        super(RandomOutcomeState, self).__init__(outcomes=outcomes)
+    def __init__(self, outcomes, callbacks, input_keys, output_keys):
+        super(RandomOutcomeState, self).__init__(outcomes=outcomes, input_keys=input_keys,
+                                                 output_keys=output_keys)
+        self._callbacks = callbacks
 
     def execute(self, userdata):
         import random
-        return random.choice(sorted(self._outcomes))
+        for key, callback in self._callbacks.items():
+            userdata[key] = callback(userdata)
+        outcome = random.choice(sorted(self._outcomes))
+        userdata.outcome = outcome
+        return outcome
 #==> pick.xml <==
 <?xml version="1.0" encoding="UTF-8"?>
 

@@ -96,6 +96,7 @@ std::string flowValue(const ir::Value& value) {
       return value.forced_string ? "!str " + quoted(value.asString())
                                  : flowScalar(value.asString());
     case ir::ValueKind::Expression:
+      if (value.asPortable()) return "!expr " + quoted(value.asExpression().code);
       return quoted("`" + value.asExpression().code + "`");
     case ir::ValueKind::List: {
       std::vector<std::string> items;

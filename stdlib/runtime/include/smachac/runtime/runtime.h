@@ -5,6 +5,7 @@
 #include "smachac/runtime/container.h"
 #include "smachac/runtime/core_states.h"
 #include "smachac/runtime/errors.h"
+#include "smachac/runtime/expression_ops.h"
 #include "smachac/runtime/file_states.h"
 #include "smachac/runtime/lambda_state.h"
 #include "smachac/runtime/run.h"

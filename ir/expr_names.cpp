@@ -1,0 +1,16 @@
+// Name binding of portable expressions.
+#include "ir/expr_names.h"
+
+namespace smachac::ir {
+
+ExprName bindExprName(const State& state, std::string_view name) {
+  for (const Name& key : state.input_keys) {
+    if (key.text == name) return {ExprNameKind::InputKey, nullptr};
+  }
+  if (state.params) {
+    if (const Value* param = state.params->find(name)) return {ExprNameKind::Param, param};
+  }
+  return {};
+}
+
+}  // namespace smachac::ir

@@ -1,0 +1,63 @@
+// Python 3's operators and built-ins on Values, for the callbacks smachac writes from portable
+// expressions (`!expr 'counter + 1'`): the C++ target computes what the Python targets compute.
+//   arithmetic   + - * on ints (64-bit; overflow throws ExpressionError, where Python would
+//                grow the int) and doubles, an int and a double giving a double; + also joins
+//                two strings or two lists; / always gives a double; // and % floor toward
+//                minus infinity, % taking the sign of the divisor (Python's rules)
+//   comparisons  == != on any values (1 == 1.0; true == 1); < <= > >= on two numbers or two
+//                strings (by code point)
+//   logic        `and`, `or` (the deciding operand, not a bool), `not`, `if ... else`
+//   built-ins    len (strings in code points, lists, maps), min and max (of their arguments,
+//                or of the items of their one argument), abs
+// A bool is a number for arithmetic and comparisons, as in Python. Anything else throws
+// ExpressionError with Python's message, e.g. "unsupported operand type(s) for +: 'int' and
+// 'str'", or "division by zero".
+#pragma once
+
+#include <initializer_list>
+
+#include "smachac/runtime/errors.h"
+#include "smachac/runtime/value.h"
+
+namespace smachac::runtime::ops {
+
+/// An operation Python would refuse (TypeError, ZeroDivisionError, ValueError) or an int
+/// overflow.
+class ExpressionError : public Error {
+ public:
+  using Error::Error;
+};
+
+Value add(const Value& a, const Value& b);
+Value subtract(const Value& a, const Value& b);
+Value multiply(const Value& a, const Value& b);
+Value divide(const Value& a, const Value& b);
+Value floorDivide(const Value& a, const Value& b);
+Value modulo(const Value& a, const Value& b);
+Value negate(const Value& a);
+Value plus(const Value& a);
+
+bool equal(const Value& a, const Value& b);
+bool notEqual(const Value& a, const Value& b);
+bool less(const Value& a, const Value& b);
+bool lessEqual(const Value& a, const Value& b);
+bool greater(const Value& a, const Value& b);
+bool greaterEqual(const Value& a, const Value& b);
+
+Value len(const Value& a);
+Value abs(const Value& a);
+/// min(a, b, ...) of several arguments, or of the items of a single one.
+Value min(std::initializer_list<Value> arguments);
+Value max(std::initializer_list<Value> arguments);
+
+/// `a and b`, `a or b`: `b` is evaluated only when it decides.
+template <class Right>
+Value logicalAnd(const Value& a, Right&& b) {
+  return a.truthy() ? Value(b()) : a;
+}
+template <class Right>
+Value logicalOr(const Value& a, Right&& b) {
+  return a.truthy() ? a : Value(b());
+}
+
+}  // namespace smachac::runtime::ops

@@ -69,15 +69,54 @@ def concurrence_paths(ir_json):
 
 
 def random_choices(ir_json):
-    """Paths of the RandomOutcomeStates that choose among more than one outcome."""
-    paths = []
+    """{path: [outcome, ...]} of the RandomOutcomeStates that choose among several outcomes."""
+    found = {}
 
     def walk(state, path):
         template = (state.get("template") or {}).get("text")
-        if template == "RandomOutcomeState" and len(state.get("outcomes", [])) > 1:
-            paths.append(path)
+        outcomes = state.get("outcomes", [])
+        if template == "RandomOutcomeState" and len(outcomes) > 1:
+            found[path] = [o["text"] if isinstance(o, dict) else o for o in outcomes]
         for child in state.get("states", []):
             walk(child, (path + "/" if path else "") + child["name"])
 
     walk(ir_json["root"], "")
-    return paths
+    return found
+
+
+def in_loop(ir_json, path):
+    """Whether the state at `path` can be entered again through the transitions of its
+    container (then a random draw may be what ends a loop)."""
+    parts = path.split("/")
+    container = ir_json["root"]
+    for part in parts[:-1]:
+        container = next(c for c in container.get("states", []) if c["name"] == part)
+    siblings = {c["name"]: c for c in container.get("states", [])}
+
+    def successors(name):
+        return [t["target"]["text"] for t in siblings[name].get("transitions", [])
+                if t.get("target_kind") == "state" and t["target"]["text"] in siblings]
+
+    seen, todo = set(), successors(parts[-1])
+    while todo:
+        name = todo.pop()
+        if name == parts[-1]:
+            return True
+        if name not in seen:
+            seen.add(name)
+            todo.extend(successors(name))
+    return False
+
+
+def typed(value):
+    """A value whose comparison also compares types: Python finds 2 == 2.0 and True == 1, the
+    targets must agree on int, float and bool too."""
+    if isinstance(value, dict):
+        return {key: typed(item) for key, item in value.items()}
+    if isinstance(value, list):
+        return [typed(item) for item in value]
+    if isinstance(value, float):
+        return ("float", repr(value))
+    if isinstance(value, (bool, int)):
+        return (type(value).__name__, value)
+    return value

@@ -16,8 +16,9 @@ userdata. Cases:
     after it starts, the way each target is preempted (targets.py).
   * examples/core/*.yml, and the golden scripts of tests/golden/{smach,flexbe} that take no
     template folder: compared on the targets that compile them (the others are listed with
-    the reason). A script that draws a random outcome among several is not compared: Python's
-    and the C++ runtime's generators draw differently.
+    the reason). A script that draws a random outcome among several is compared once per
+    combination of outcomes, each random state pinned to one (pinning.py): Python's and the
+    C++ runtime's generators draw differently.
 A difference fails the test, unless KNOWN_DIFFERENCES names the case and the target with the
 rule that explains it; such a case must then differ exactly as recorded, so the rule stays
 demonstrated. Prints one line per case and target, then `N passed, N failed, N skipped`.
@@ -34,6 +35,7 @@ sys.path[:0] = [os.path.join(ROOT, "tests", "ros"), os.path.join(ROOT, "tools", 
 
 import canonical  # noqa: E402
 import known_differences  # noqa: E402
+import pinning  # noqa: E402
 import targets  # noqa: E402
 from report import Report  # noqa: E402
 from ros_session import run_test  # noqa: E402
@@ -114,7 +116,7 @@ def differences(reference, other):
         found.append("states: smach %s, this %s" % (reference["lines"], other["lines"]))
     if reference["outcome"] != other["outcome"]:
         found.append("outcome: smach %s, this %s" % (reference["outcome"], other["outcome"]))
-    if reference["userdata"] != other["userdata"]:
+    if canonical.typed(reference["userdata"]) != canonical.typed(other["userdata"]):
         found.append("userdata: smach %s, this %s" % (reference["userdata"], other["userdata"]))
     return found
 
@@ -130,8 +132,9 @@ def judge(report, tools, case, runs):
     ir = tools.ir_json(case.script)
     concurrences = canonical.concurrence_paths(ir) if ir else set()
     if ir and canonical.random_choices(ir):
-        return report.skip(case.name, "draws a random outcome in %s: Python's and the C++ "
-                           "runtime's generators draw differently" % canonical.random_choices(ir))
+        return report.skip(case.name, "draws a random outcome in %s and cannot be pinned: in "
+                           "a loop, in a sub-script or with target variants (pinning.py)"
+                           % sorted(canonical.random_choices(ir)))
     reference = runs.get("smach")
     if reference is None or reference.problem:
         why = reference.problem if reference else "not a smach case"
@@ -162,6 +165,19 @@ def judge_target(report, case, target, run, ref, concurrences):
                 (known.rule, "; ".join(found) or "no difference"))
 
 
+def pin(tools, case, work_dir):
+    """The case, or its variants with every random choice pinned (pinning.py)."""
+    ir = tools.ir_json(case.script)
+    choices = canonical.random_choices(ir) if ir else {}
+    has_target_variants = any(case.script_for(t) != case.script for t in ALL_TARGETS)
+    if not choices or has_target_variants or any(canonical.in_loop(ir, p) for p in choices):
+        return [case]
+    found = pinning.variants(case.name, case.script, choices, work_dir)
+    if found is None:
+        return [case]
+    return [Case(name, script, case.written_for_test) for name, script in found]
+
+
 def main():
     smachac, cxx, runtime_lib, runtime_include = [os.path.abspath(a) if os.path.exists(a) else a
                                                   for a in sys.argv[1:5]]
@@ -171,6 +187,7 @@ def main():
     def body(session, work):
         tools = targets.Toolchain(smachac, cxx, runtime_lib, runtime_include, session, work)
         cases = [c for c in discover() if not only or any(o in c.name for o in only)]
+        cases = [pinned for c in cases for pinned in pin(tools, c, work)]
         with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
             results = list(pool.map(lambda c: run_case(tools, c), cases))
         for case, runs in zip(cases, results):

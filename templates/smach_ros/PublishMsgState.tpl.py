@@ -4,14 +4,22 @@ description: >
   A SMACH state that starts or stops publishing a ROS message. With action
   `start` it publishes the `msg` input key on the `topic` input key (default
   smacha/<state name>) at the `rate` input key (default 100 Hz) until a later
-  state stops it (`stop`) or stops every topic (`stop_all`). A list message
-  [x, y, z] becomes a geometry_msgs/PointStamped, [[x, y, z], [x, y, z, w]] a
-  geometry_msgs/PoseStamped.
+  state stops it (`stop`) or stops every topic (`stop_all`). Points and poses
+  are published stamped: a Point or a list [x, y, z] as a
+  geometry_msgs/PointStamped, a Pose or [[x, y, z], [qx, qy, qz, qw]] as a
+  geometry_msgs/PoseStamped, a list of poses as a PoseArray (the Parse*
+  helpers; the `msg_type` input key names the type when a list is ambiguous).
 language: Python
 framework: SMACH
 type: State
 tags: [core, ros]
 includes:
+- ParseMsg
+- ParsePointStamped
+- ParsePoseStamped
+- ParsePoseArray
+- ParsePointCloud
+- ParsePointCloud2
 - MsgPublisher
 extends:
 - State
@@ -20,10 +28,12 @@ variables:
     description: start, stop or stop_all.
     type: str
 - - input_keys:
-      description: The userdata keys the state reads (msg, topic, rate, frame_id).
+      description: The userdata keys the state reads (msg, topic, rate, msg_type, frame_id).
       type: list of str
 - - output_keys:
-      description: The userdata keys the state writes (msg, topic).
+      description: >
+        The userdata keys the state writes (msg, output_msg or msg_output;
+        topic, output_topic or topic_output).
       type: list of str
 - - callbacks:
       description: Callbacks by output key, e.g. to build the message.
@@ -39,7 +49,7 @@ variables:
       type: dict of list of str
 input_keys:
 - msg:
-    description: The message, or a list for a point or a pose.
+    description: The message, or a list for a point, a pose or poses.
     type: [genpy.Message, list]
 - topic:
     description: The topic to publish on.
@@ -48,6 +58,9 @@ input_keys:
       description: The publishing rate.
       type: float
       units: Hz
+- - msg_type:
+      description: The type to publish msg as, e.g. geometry_msgs/PoseArray.
+      type: str
 - - frame_id:
       description: The frame of the message header.
       type: str
@@ -55,7 +68,19 @@ output_keys:
 - - msg:
       description: The message as published.
       type: genpy.Message
+  - output_msg:
+      description: The message as published.
+      type: genpy.Message
+  - msg_output:
+      description: The message as published.
+      type: genpy.Message
 - - topic:
+      description: The topic published on.
+      type: str
+  - output_topic:
+      description: The topic published on.
+      type: str
+  - topic_output:
       description: The topic published on.
       type: str
 outcomes:
@@ -65,11 +90,16 @@ outcomes:
 {% from "Utils.tpl.py" import import_module, render_init_callbacks, render_execute_callbacks %}
 {% from "ScriptImports.tpl.py" import render_script_imports %}
 {% extends "State.tpl.py" %}
+{% include "ParseMsg.tpl.py" %}
+{% include "ParsePointStamped.tpl.py" %}
+{% include "ParsePoseStamped.tpl.py" %}
+{% include "ParsePoseArray.tpl.py" %}
+{% include "ParsePointCloud.tpl.py" %}
+{% include "ParsePointCloud2.tpl.py" %}
 {% include "MsgPublisher.tpl.py" %}
 
 {% block imports %}
 {{ super() }}
-{{ import_module(defined_headers, 'geometry_msgs.msg') }}
 {{ render_script_imports(defined_headers, import_modules if import_modules is defined else [], from_imports if from_imports is defined else {}) }}
 {% endblock imports %}
 
@@ -86,21 +116,12 @@ class PublishMsgState(smach.State):
         self._name = name
         self._publisher = msg_publisher
         self._action = action
+        # The parse function of each message class (parse_msg): points and poses are stamped.
+        self._parsers = [(PointStamped, parse_pointstamped), (Point, parse_pointstamped),
+                         (PoseStamped, parse_posestamped), (Pose, parse_posestamped),
+                         (PoseArray, parse_posearray), (PointCloud, parse_pointcloud),
+                         (PointCloud2, parse_pointcloud2)]
         {{ render_init_callbacks() }}
-
-    @staticmethod
-    def _message(msg):
-        if isinstance(msg, (list, tuple)) and len(msg) == 3:
-            point = geometry_msgs.msg.PointStamped()
-            point.point.x, point.point.y, point.point.z = msg
-            return point
-        if isinstance(msg, (list, tuple)) and len(msg) == 2:
-            pose = geometry_msgs.msg.PoseStamped()
-            p, q = pose.pose.position, pose.pose.orientation
-            p.x, p.y, p.z = msg[0]
-            q.x, q.y, q.z, q.w = msg[1]
-            return pose
-        return msg
 
     def execute(self, userdata):
         {{ render_execute_callbacks() }}
@@ -110,17 +131,20 @@ class PublishMsgState(smach.State):
         if self._action == 'stop_all':
             return self._publisher.stop_all()
         try:
-            msg = self._message(userdata.msg)
+            msg_type = userdata.msg_type if 'msg_type' in self._input_keys else None
+            msg = parse_msg(userdata.msg, self._parsers, msg_type)
             rate = userdata.rate if 'rate' in self._input_keys else 100.0
             frame_id = userdata.frame_id if 'frame_id' in self._input_keys else ''
             outcome = self._publisher.start(msg, topic, rate, frame_id=frame_id)
         except Exception as e:
             rospy.logerr('Cannot publish on {}: {}'.format(topic, e))
             return 'aborted'
-        if 'msg' in self._output_keys:
-            userdata.msg = msg
-        if 'topic' in self._output_keys:
-            userdata.topic = topic
+        for key in ['msg', 'output_msg', 'msg_output']:
+            if key in self._output_keys:
+                setattr(userdata, key, msg)
+        for key in ['topic', 'output_topic', 'topic_output']:
+            if key in self._output_keys:
+                setattr(userdata, key, topic)
         return outcome
 {% do defined_headers.append('class_PublishMsgState') %}
 {% endif %}

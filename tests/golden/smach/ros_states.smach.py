@@ -13,9 +13,129 @@ from actionlib import *
 
 import tf2_ros
 
+import genpy
+import roslib.message
+
+
+
+
+
+
+from geometry_msgs.msg import Point
+from geometry_msgs.msg import Point32
+from geometry_msgs.msg import PointStamped
+
+
+
+
+
+
+
+from geometry_msgs.msg import Pose
+from geometry_msgs.msg import PoseStamped
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+from geometry_msgs.msg import PoseArray
+
+
+
+
+
+
+from sensor_msgs.msg import PointCloud
+from sensor_msgs.msg import PointCloud2
+from sensor_msgs import point_cloud2 as pc2
+
+
+
+
+
+
+
+from sensor_msgs.point_cloud2 import create_cloud_xyz32
+
+
+
+
+
+
 import threading
 
 
+def parse_msg(msg, parsers, msg_type=None):
+    """msg as a message, through parsers, a list of (message class, parse function) pairs.
+    With msg_type (a type name such as geometry_msgs/PoseStamped) the parser of that type
+    converts msg (ValueError when it cannot); a message of a class in parsers goes through
+    its parser, any other message is returned as it is; anything else (a list) goes through
+    the first parser that accepts it, else ValueError."""
+    if msg_type:
+        msg_class = roslib.message.get_message_class(msg_type)
+        if msg_class is None:
+            raise ValueError('unknown message type {}'.format(msg_type))
+        for parsed_class, parser in parsers:
+            if parsed_class is msg_class:
+                return parser(msg)
+        if isinstance(msg, msg_class):
+            return msg
+        raise ValueError('{!r} is not a {}'.format(msg, msg_type))
+    for parsed_class, parser in parsers:
+        if isinstance(msg, parsed_class):
+            return parser(msg)
+    if isinstance(msg, genpy.Message):
+        return msg
+    for _, parser in parsers:
+        try:
+            return parser(msg)
+        except ValueError:
+            pass
+    raise ValueError('cannot make a message of {!r}'.format(msg))
+
+
+
+
+
+
+
+
+def parse_pointstamped(point_input):
+    """A PointStamped from a PointStamped (as it is), a Point, a Point32 or [x, y, z]."""
+    if isinstance(point_input, PointStamped):
+        return point_input
+    if isinstance(point_input, (Point, Point32)):
+        coordinates = [point_input.x, point_input.y, point_input.z]
+    else:
+        coordinates = []
+        if isinstance(point_input, (list, tuple)):
+            try:
+                coordinates = [float(value) for value in point_input]
+            except (TypeError, ValueError):
+                coordinates = []
+        if len(coordinates) != 3:
+            raise ValueError('not a point (PointStamped, Point, Point32 or [x, y, z]): '
+                             '{!r}'.format(point_input))
+    stamped = PointStamped()
+    stamped.point.x, stamped.point.y, stamped.point.z = coordinates
+    if rospy.rostime.is_rostime_initialized():
+        stamped.header.stamp = rospy.Time.now()
+    return stamped
 
 
 
@@ -25,9 +145,103 @@ import threading
 
 
 
-import geometry_msgs.msg
 
-import roslib.message
+def parse_pose(pose_input):
+    """A Pose from a Pose (as it is), a PoseStamped (its pose) or [position, quaternion]."""
+    if isinstance(pose_input, Pose):
+        return pose_input
+    if isinstance(pose_input, PoseStamped):
+        return pose_input.pose
+    position = orientation = []
+    if isinstance(pose_input, (list, tuple)) and len(pose_input) == 2:
+        try:
+            position = [float(value) for value in pose_input[0]]
+            orientation = [float(value) for value in pose_input[1]]
+        except (TypeError, ValueError):
+            position = orientation = []
+    if len(position) != 3 or len(orientation) != 4:
+        raise ValueError('not a pose (Pose, PoseStamped or [[x, y, z], [qx, qy, qz, qw]]): '
+                         '{!r}'.format(pose_input))
+    pose = Pose()
+    pose.position.x, pose.position.y, pose.position.z = position
+    pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w = orientation
+    return pose
+
+
+
+
+
+
+
+def parse_posestamped(pose_input):
+    """A PoseStamped from a PoseStamped (as it is), a Pose or [position, quaternion]."""
+    if isinstance(pose_input, PoseStamped):
+        return pose_input
+    stamped = PoseStamped(pose=parse_pose(pose_input))
+    if rospy.rostime.is_rostime_initialized():
+        stamped.header.stamp = rospy.Time.now()
+    return stamped
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+
+def parse_posearray(posearray_input):
+    """A PoseArray from a PoseArray (as it is) or a list of poses (see parse_pose)."""
+    if isinstance(posearray_input, PoseArray):
+        return posearray_input
+    if not isinstance(posearray_input, (list, tuple)):
+        raise ValueError('not a pose array (PoseArray or a list of poses): '
+                         '{!r}'.format(posearray_input))
+    posearray = PoseArray(poses=[parse_pose(pose) for pose in posearray_input])
+    if rospy.rostime.is_rostime_initialized():
+        posearray.header.stamp = rospy.Time.now()
+    return posearray
+
+
+
+
+
+
+
+
+def parse_pointcloud(pointcloud_input):
+    """A PointCloud from a PointCloud (as it is) or a PointCloud2 (x, y, z of each point)."""
+    if isinstance(pointcloud_input, PointCloud):
+        return pointcloud_input
+    if not isinstance(pointcloud_input, PointCloud2):
+        raise ValueError('not a point cloud (PointCloud or PointCloud2): '
+                         '{!r}'.format(pointcloud_input))
+    points = pc2.read_points(pointcloud_input, field_names=('x', 'y', 'z'), skip_nans=True)
+    return PointCloud(header=pointcloud_input.header,
+                      points=[Point32(x=x, y=y, z=z) for x, y, z in points])
+
+
+
+
+
+
+
+
+def parse_pointcloud2(pointcloud_input):
+    """A PointCloud2 from a PointCloud2 (as it is) or a PointCloud (its points)."""
+    if isinstance(pointcloud_input, PointCloud2):
+        return pointcloud_input
+    if not isinstance(pointcloud_input, PointCloud):
+        raise ValueError('not a point cloud (PointCloud2 or PointCloud): '
+                         '{!r}'.format(pointcloud_input))
+    return create_cloud_xyz32(pointcloud_input.header,
+                              [[p.x, p.y, p.z] for p in pointcloud_input.points])
 
 
 class TF2ListenerSingleton(object):
@@ -145,6 +359,11 @@ class PublishMsgState(smach.State):
         self._name = name
         self._publisher = msg_publisher
         self._action = action
+        # The parse function of each message class (parse_msg): points and poses are stamped.
+        self._parsers = [(PointStamped, parse_pointstamped), (Point, parse_pointstamped),
+                         (PoseStamped, parse_posestamped), (Pose, parse_posestamped),
+                         (PoseArray, parse_posearray), (PointCloud, parse_pointcloud),
+                         (PointCloud2, parse_pointcloud2)]
         
         self._cbs = []
         for cb_name in (callbacks or []):
@@ -164,20 +383,6 @@ class PublishMsgState(smach.State):
                 self.register_outcomes(self._cb_outcomes[-1])
 
 
-    @staticmethod
-    def _message(msg):
-        if isinstance(msg, (list, tuple)) and len(msg) == 3:
-            point = geometry_msgs.msg.PointStamped()
-            point.point.x, point.point.y, point.point.z = msg
-            return point
-        if isinstance(msg, (list, tuple)) and len(msg) == 2:
-            pose = geometry_msgs.msg.PoseStamped()
-            p, q = pose.pose.position, pose.pose.orientation
-            p.x, p.y, p.z = msg[0]
-            q.x, q.y, q.z, q.w = msg[1]
-            return pose
-        return msg
-
     def execute(self, userdata):
         
         # Call the callbacks
@@ -192,17 +397,20 @@ class PublishMsgState(smach.State):
         if self._action == 'stop_all':
             return self._publisher.stop_all()
         try:
-            msg = self._message(userdata.msg)
+            msg_type = userdata.msg_type if 'msg_type' in self._input_keys else None
+            msg = parse_msg(userdata.msg, self._parsers, msg_type)
             rate = userdata.rate if 'rate' in self._input_keys else 100.0
             frame_id = userdata.frame_id if 'frame_id' in self._input_keys else ''
             outcome = self._publisher.start(msg, topic, rate, frame_id=frame_id)
         except Exception as e:
             rospy.logerr('Cannot publish on {}: {}'.format(topic, e))
             return 'aborted'
-        if 'msg' in self._output_keys:
-            userdata.msg = msg
-        if 'topic' in self._output_keys:
-            userdata.topic = topic
+        for key in ['msg', 'output_msg', 'msg_output']:
+            if key in self._output_keys:
+                setattr(userdata, key, msg)
+        for key in ['topic', 'output_topic', 'topic_output']:
+            if key in self._output_keys:
+                setattr(userdata, key, topic)
         return outcome
 
 class WaitForMsgState(smach.State):

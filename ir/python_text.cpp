@@ -4,33 +4,9 @@
 #include <fmt/core.h>
 
 #include "ir/support/python_float.h"
+#include "ir/support/python_text.h"
 
 namespace smachac::ir {
-
-std::string pythonStringRepr(std::string_view text) {
-  bool has_single = text.find('\'') != std::string_view::npos;
-  bool has_double = text.find('"') != std::string_view::npos;
-  char quote = has_single && !has_double ? '"' : '\'';
-  std::string out(1, quote);
-  for (char ch : text) {
-    unsigned char c = static_cast<unsigned char>(ch);
-    if (ch == quote || ch == '\\') {
-      out += '\\';
-      out += ch;
-    } else if (ch == '\n') {
-      out += "\\n";
-    } else if (ch == '\r') {
-      out += "\\r";
-    } else if (ch == '\t') {
-      out += "\\t";
-    } else if (c < 0x20 || c == 0x7f) {
-      out += fmt::format("\\x{:02x}", c);
-    } else {
-      out += ch;
-    }
-  }
-  return out + quote;
-}
 
 std::string pythonRepr(const Value& value) {
   switch (value.kind()) {

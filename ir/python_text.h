@@ -11,7 +11,5 @@ namespace smachac::ir {
 
 std::string pythonStr(const Value& value);
 std::string pythonRepr(const Value& value);
-/// Python's repr of a str: single quotes unless it contains ' and no ".
-std::string pythonStringRepr(std::string_view text);
 
 }  // namespace smachac::ir

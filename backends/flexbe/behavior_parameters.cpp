@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <array>
 
-#include "passes/analysis/identifiers.h"
+#include "ir/support/identifiers.h"
 
 namespace smachac::backends::flexbe {
 namespace {
@@ -54,8 +54,7 @@ ir::Value unmarked(ir::Value value) {
 }  // namespace
 
 std::optional<std::string> parameterRejection(std::string_view key, const ir::Value& value) {
-  if (std::optional<std::string> problem =
-          passes::identifierProblem(key, passes::IdentifierRules::Python)) {
+  if (std::optional<std::string> problem = identifierProblem(key, IdentifierRules::Python)) {
     return fmt::format("its name {}", *problem);
   }
   if (key.starts_with('_')) return std::string("names starting with `_` are the Behavior's own");

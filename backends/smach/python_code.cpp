@@ -8,18 +8,14 @@
 #include <vector>
 
 #include "backends/tmpl/py_number.h"
-#include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_print.h"
 #include "ir/support/python_keywords.h"
+#include "ir/support/python_text.h"
 
 namespace smachac::backends::smach {
 namespace {
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
-
-bool isIdentifierChar(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || isDigit(c) || c == '_';
-}
 
 /// [A-Za-z_][A-Za-z0-9_]*, not a keyword.
 bool isPlainName(std::string_view text) {
@@ -107,10 +103,6 @@ std::string floatLiteral(double d) {
   return tmpl::repr(tmpl::Value::real(d));
 }
 
-void appendHex(std::string& out, char prefix, uint32_t cp, int digits) {
-  out += fmt::format("\\{}{:0{}x}", prefix, cp, digits);
-}
-
 }  // namespace
 
 std::string pythonLiteral(const tmpl::Value& value) {
@@ -145,24 +137,7 @@ std::string pythonCode(const tmpl::Value& value) {
 
 std::string pythonComment(std::string_view text) {
   std::string out;
-  for (size_t at = 0; at < text.size();) {
-    char32_t cp = tmpl::unicode::decode(text, at);
-    if (cp == '\t') {
-      out += "\\t";
-    } else if (cp == '\n') {
-      out += "\\n";
-    } else if (cp == '\r') {
-      out += "\\r";
-    } else if (tmpl::unicode::isPrintable(cp)) {
-      tmpl::unicode::encode(out, cp);
-    } else if (cp <= 0xFF) {
-      appendHex(out, 'x', cp, 2);
-    } else if (cp <= 0xFFFF) {
-      appendHex(out, 'u', cp, 4);
-    } else {
-      appendHex(out, 'U', cp, 8);
-    }
-  }
+  appendPythonEscapes(out, text);
   return out;
 }
 

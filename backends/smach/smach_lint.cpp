@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "backends/smach/python_code.h"
-#include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::backends::smach {
 namespace {
@@ -45,7 +45,7 @@ void checkMapOrder(const ir::Value& value, const std::string& key, DiagnosticEmi
 
 void checkUserdataEntry(const ir::Argument& entry, DiagnosticEmitter& diags) {
   const std::string& key = entry.key.text;
-  std::string lowered = tmpl::unicode::toLower(key);
+  std::string lowered = unicode::toLower(key);
   if (lowered != key) {
     diags.emit(DiagKind::SmachLowercasedUserdataKey, entry.key.loc, key, lowered, key);
   }

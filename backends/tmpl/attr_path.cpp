@@ -3,7 +3,7 @@
 
 #include "backends/tmpl/render.h"
 #include "backends/tmpl/string_ops.h"
-#include "backends/tmpl/unicode.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 

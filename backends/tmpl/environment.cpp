@@ -9,8 +9,7 @@
 
 #include "backends/tmpl/environment_impl.h"
 #include "backends/tmpl/render.h"
-#include "backends/tmpl/unicode.h"
-#include "templates/builtin_templates.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 
@@ -114,10 +113,6 @@ std::string renderWith(EnvironmentImpl& env, std::string_view name, const Value&
 }
 
 }  // namespace
-
-Environment::Environment(std::vector<std::string> templateDirs,
-                         std::vector<std::string> builtinSets)
-    : Environment(std::move(templateDirs), std::move(builtinSets), templates::builtinTemplates()) {}
 
 Environment::Environment(std::vector<std::string> templateDirs,
                          std::vector<std::string> builtinSets,

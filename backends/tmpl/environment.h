@@ -33,9 +33,8 @@ struct RenderOptions {
 class Environment {
  public:
   /// `templateDirs` are searched in order before the built-in sets, which are prefixes into
-  /// the embedded template table (e.g. {"smach/", "smach_ros/"}).
-  Environment(std::vector<std::string> templateDirs, std::vector<std::string> builtinSets);
-  /// The same with an explicit embedded table (tests).
+  /// `builtins`, the caller's table of embedded templates (e.g. {"smach/", "smach_ros/"}):
+  /// the engine knows no templates of its own.
   Environment(std::vector<std::string> templateDirs, std::vector<std::string> builtinSets,
               std::span<const EmbeddedFile> builtins);
   ~Environment();

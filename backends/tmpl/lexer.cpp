@@ -3,7 +3,7 @@
 // with lstrip_blocks, spaces before a `{%`/`{#` tag that starts a line are dropped.
 #include "backends/tmpl/lexer.h"
 
-#include "backends/tmpl/unicode.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 namespace {

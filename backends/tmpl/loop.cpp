@@ -3,9 +3,9 @@
 // Jinja2's LoopContext attributes (index, first, last, length, cycle, changed, ...).
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/render.h"
-#include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_ops.h"
 #include "backends/tmpl/value_print.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 namespace {

@@ -8,9 +8,9 @@
 #include "backends/tmpl/py_format.h"
 #include "backends/tmpl/render.h"
 #include "backends/tmpl/string_ops.h"
-#include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_ops.h"
 #include "backends/tmpl/value_print.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 namespace {

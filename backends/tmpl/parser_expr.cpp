@@ -6,7 +6,7 @@
 
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/parser.h"
-#include "backends/tmpl/unicode.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 namespace {

@@ -6,9 +6,9 @@
 #include <optional>
 
 #include "backends/tmpl/error.h"
-#include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_ops.h"
 #include "backends/tmpl/value_print.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 namespace {

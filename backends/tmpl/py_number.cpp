@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "backends/tmpl/unicode.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 namespace {

@@ -2,9 +2,9 @@
 // comparisons, `and`/`or` returning operands, undefined values that fail when used).
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/render.h"
-#include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_ops.h"
 #include "backends/tmpl/value_print.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 namespace {

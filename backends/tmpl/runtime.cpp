@@ -8,6 +8,7 @@
 #include "backends/tmpl/render.h"
 #include "backends/tmpl/value_ops.h"
 #include "backends/tmpl/value_print.h"
+#include "ir/support/python_text.h"
 
 namespace smachac::tmpl {
 namespace {
@@ -203,7 +204,7 @@ CallGuard::~CallGuard() {
 void MacroObject::repr(std::string& out) const {
   out += "<Macro ";
   if (node_->name) {
-    appendQuoted(out, *node_->name);
+    appendPythonStringRepr(out, *node_->name);
   } else {
     out += "'caller'";
   }
@@ -231,7 +232,7 @@ Value BlockRefObject::call(Exec& ex, const CallArgs&) const {
 
 void ModuleObject::repr(std::string& out) const {
   out += "<TemplateModule ";
-  appendQuoted(out, tmpl_->name());
+  appendPythonStringRepr(out, tmpl_->name());
   out += ">";
 }
 

@@ -8,8 +8,8 @@
 #include "backends/tmpl/builtins.h"
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/py_number.h"
-#include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_ops.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 namespace {

@@ -4,7 +4,7 @@
 #include "backends/tmpl/lexer.h"
 #include "backends/tmpl/parser.h"
 #include "backends/tmpl/scope.h"
-#include "backends/tmpl/unicode.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 

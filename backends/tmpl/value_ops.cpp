@@ -8,8 +8,8 @@
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/limits.h"
 #include "backends/tmpl/py_format.h"
-#include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_print.h"
+#include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 namespace {

@@ -6,8 +6,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "backends/tmpl/unicode.h"
 #include "backends/tmpl/value_ops.h"
+#include "ir/support/python_float.h"
+#include "ir/support/python_text.h"
 
 namespace smachac::tmpl {
 namespace {
@@ -32,35 +33,6 @@ class ReprEnter {
   const void* identity_;
   bool recursive_ = false;
 };
-
-void appendHex(std::string& out, char prefix, uint32_t cp, int digits) {
-  static const char* kHex = "0123456789abcdef";
-  out.push_back('\\');
-  out.push_back(prefix);
-  for (int shift = (digits - 1) * 4; shift >= 0; shift -= 4)
-    out.push_back(kHex[(cp >> shift) & 15]);
-}
-
-void appendEscapedChar(std::string& out, char32_t cp, char quote) {
-  if (cp == static_cast<char32_t>(quote) || cp == '\\') {
-    out.push_back('\\');
-    out.push_back(static_cast<char>(cp));
-  } else if (cp == '\t') {
-    out += "\\t";
-  } else if (cp == '\n') {
-    out += "\\n";
-  } else if (cp == '\r') {
-    out += "\\r";
-  } else if (unicode::isPrintable(cp)) {
-    unicode::encode(out, cp);
-  } else if (cp <= 0xFF) {
-    appendHex(out, 'x', cp, 2);
-  } else if (cp <= 0xFFFF) {
-    appendHex(out, 'u', cp, 4);
-  } else {
-    appendHex(out, 'U', cp, 8);
-  }
-}
 
 void appendSequence(std::string& out, const Value& v) {
   bool tuple = v.isTuple();
@@ -107,70 +79,7 @@ void appendInt(std::string& out, int64_t i) {
   out.append(buf, result.ptr);
 }
 
-void appendFloatRepr(std::string& out, double d) {
-  if (std::isnan(d)) {
-    out += "nan";
-    return;
-  }
-  if (std::isinf(d)) {
-    out += d < 0 ? "-inf" : "inf";
-    return;
-  }
-  char buf[40];
-  auto result = std::to_chars(buf, buf + sizeof buf, d, std::chars_format::scientific);
-  std::string_view sci(buf, static_cast<size_t>(result.ptr - buf));
-  bool negative = sci.front() == '-';
-  if (negative) sci.remove_prefix(1);
-  size_t e = sci.find('e');
-  std::string digits;
-  for (char c : sci.substr(0, e)) {
-    if (c != '.') digits.push_back(c);
-  }
-  int exponent = std::stoi(std::string(sci.substr(e + 1)));
-  int decpt = exponent + 1;
-  if (negative) out.push_back('-');
-  if (decpt > -4 && decpt <= 16) {
-    if (decpt <= 0) {
-      out += "0.";
-      out.append(static_cast<size_t>(-decpt), '0');
-      out += digits;
-    } else if (static_cast<size_t>(decpt) >= digits.size()) {
-      out += digits;
-      out.append(static_cast<size_t>(decpt) - digits.size(), '0');
-      out += ".0";
-    } else {
-      out += digits.substr(0, static_cast<size_t>(decpt));
-      out.push_back('.');
-      out += digits.substr(static_cast<size_t>(decpt));
-    }
-    return;
-  }
-  out.push_back(digits[0]);
-  if (digits.size() > 1) {
-    out.push_back('.');
-    out += digits.substr(1);
-  }
-  char expBuf[16];
-  std::snprintf(expBuf, sizeof expBuf, "e%c%02d", exponent < 0 ? '-' : '+', std::abs(exponent));
-  out += expBuf;
-}
-
-void appendQuoted(std::string& out, std::string_view s) {
-  bool hasSingle = s.find('\'') != std::string_view::npos;
-  bool hasDouble = s.find('"') != std::string_view::npos;
-  char quote = hasSingle && !hasDouble ? '"' : '\'';
-  out.push_back(quote);
-  for (size_t pos = 0; pos < s.size();) {
-    unsigned char c = static_cast<unsigned char>(s[pos]);
-    if (c >= 0x20 && c < 0x7F && c != '\\' && c != static_cast<unsigned char>(quote)) {
-      out.push_back(static_cast<char>(c));
-      ++pos;
-      continue;
-    }
-    appendEscapedChar(out, unicode::decode(s, pos), quote);
-  }
-  out.push_back(quote);
-}
+void appendFloatRepr(std::string& out, double d) { out += pythonFloatRepr(d); }
 
 void appendStr(std::string& out, const Value& v) {
   switch (v.kind()) {
@@ -207,11 +116,11 @@ void appendRepr(std::string& out, const Value& v) {
     case Kind::kString:
       if (v.isMarkup()) {
         out += "Markup(";
-        appendQuoted(out, v.s());
+        appendPythonStringRepr(out, v.s());
         out += ")";
         return;
       }
-      appendQuoted(out, v.s());
+      appendPythonStringRepr(out, v.s());
       return;
     case Kind::kList:
     case Kind::kTuple:

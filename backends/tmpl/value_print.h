@@ -16,8 +16,6 @@ std::string repr(const Value& v);
 
 void appendFloatRepr(std::string& out, double d);
 void appendInt(std::string& out, int64_t i);
-/// Python's repr of a str: quotes chosen like Python, non-printable characters escaped.
-void appendQuoted(std::string& out, std::string_view s);
 
 /// HTML escaping of & < > ' " (MarkupSafe's escape).
 std::string htmlEscape(std::string_view s);

@@ -4,7 +4,7 @@
 //   * state-named-like-outcome  a state of a StateMachine (or the root) is named like an outcome
 //                               of the container: transitions to that name reach the state
 //   * duplicate-list-entry      a name listed twice in `outcomes`, `input_keys`, `output_keys`
-//   * invalid-identifier        for code targets (passes/analysis/identifiers.h), names that
+//   * invalid-identifier        for code targets (ir/support/identifiers.h), names that
 //                               become identifiers: the script name (the variable
 //                               `<name lower>`), container names (`sm_<name lower>`), and
 //                               userdata keys (`ud.<key>`; entries of `userdata` are also
@@ -22,7 +22,7 @@
 #include <string_view>
 #include <unordered_map>
 
-#include "passes/analysis/identifiers.h"
+#include "ir/support/identifiers.h"
 #include "passes/analysis/outcomes.h"
 #include "passes/validate/checks.h"
 

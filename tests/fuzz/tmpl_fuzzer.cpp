@@ -11,6 +11,7 @@
 
 #include "backends/tmpl/environment.h"
 #include "backends/tmpl/value_convert.h"
+#include "templates/builtin_templates.h"
 
 namespace {
 
@@ -104,7 +105,7 @@ void exercise(Environment& env, const Value& context) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   FuzzInput input = splitInput({reinterpret_cast<const char*>(data), size});
-  Environment env({}, {"smach/"});
+  Environment env({}, {"smach/"}, smachac::templates::builtinTemplates());
   env.setLimits(kFuzzLimits);
   addExtensions(env);
   for (const auto& [name, source] : kFixedTemplates) env.addTemplate(name, source);

@@ -5,7 +5,8 @@
 #include <array>
 #include <filesystem>
 
-#include "passes/analysis/identifiers.h"
+#include "ir/support/identifiers.h"
+#include "ir/support/python_text.h"
 
 namespace smachac::driver {
 namespace {
@@ -26,10 +27,6 @@ bool isIncludable(std::string_view name) {
   return std::none_of(name.begin(), name.end(), [](char c) {
     return c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20;
   });
-}
-
-bool isIdentifierChar(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
 }
 
 }  // namespace
@@ -70,7 +67,7 @@ std::string namespaceName(std::string_view stem) {
   if (name.empty() || name[0] == '_') name = "sm" + name;
   if (name[0] >= '0' && name[0] <= '9') name = "sm_" + name;
   bool taken = std::find(kTakenNames.begin(), kTakenNames.end(), name) != kTakenNames.end();
-  if (taken || passes::identifierProblem(name, passes::IdentifierRules::Cpp)) name += "_";
+  if (taken || identifierProblem(name, IdentifierRules::Cpp)) name += "_";
   return name;
 }
 

@@ -17,6 +17,7 @@
 #include "backends/smach/python_extensions.h"
 #include "backends/tmpl/environment.h"
 #include "backends/tmpl/value_convert.h"
+#include "templates/builtin_templates.h"
 #include "tools/smachac/commands.h"
 #include "tools/smachac/output.h"
 #include "tools/smachac/session.h"
@@ -106,7 +107,7 @@ int render(RenderOptions& o) {
     name = path.filename().string();
   }
   if (o.builtinSets.empty()) o.builtinSets.push_back("smach");
-  tmpl::Environment env(o.templateDirs, o.builtinSets);
+  tmpl::Environment env(o.templateDirs, o.builtinSets, templates::builtinTemplates());
   generator::ValueConverter converter;  // the SMACH templates' filters and tests (pyrepr, ...)
   backends::smach::registerPythonExtensions(env, converter, /*include_comments=*/false);
   if (std::optional<std::string> resolved = env.resolveScriptTemplate(name)) name = *resolved;

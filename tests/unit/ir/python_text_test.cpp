@@ -6,6 +6,7 @@
 
 #include "ir/python_text.h"
 #include "ir/support/python_float.h"
+#include "ir/support/python_text.h"
 
 using smachac::pythonFloatRepr;
 using smachac::ir::Value;
@@ -39,5 +40,17 @@ TEST_CASE("str and repr of values follow Python") {
   CHECK(smachac::ir::pythonStr(Value::integer(-3)) == "-3");
   Value map = Value::map({{"k", {}, Value::list({Value::integer(1)})}});
   CHECK(smachac::ir::pythonStr(map) == "{'k': [1]}");
-  CHECK(smachac::ir::pythonStringRepr("tab\tnew\nline\\") == R"('tab\tnew\nline\\')");
+  CHECK(smachac::pythonStringRepr("tab\tnew\nline\\") == R"('tab\tnew\nline\\')");
+}
+
+TEST_CASE("repr escapes what Python does not print, as CPython does") {
+  // U+00A0 (no-break space), U+2028 (line separator), U+0085, U+FEFF, an invalid byte.
+  CHECK(smachac::pythonStringRepr("a\u00a0b") == R"('a\xa0b')");
+  CHECK(smachac::pythonStringRepr("\u2028\u0085\ufeff") == R"('\u2028\x85\ufeff')");
+  CHECK(smachac::pythonStringRepr("\xff") == R"('\udcff')");
+  CHECK(smachac::pythonStringRepr("é😀\x7f") == R"('é😀\x7f')");
+  CHECK(smachac::pythonStringRepr("it's") == R"("it's")");
+  CHECK(smachac::pythonStringRepr("'\"") == R"('\'"')");
+  Value list = Value::list({Value::string("a\u00a0b")});
+  CHECK(smachac::ir::pythonStr(list) == R"(['a\xa0b'])");
 }

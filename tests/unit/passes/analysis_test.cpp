@@ -6,9 +6,9 @@
 #include <set>
 #include <string>
 
+#include "ir/support/identifiers.h"
 #include "passes/analysis/container_graph.h"
 #include "passes/analysis/dominators.h"
-#include "passes/analysis/identifiers.h"
 #include "passes/analysis/must_defined.h"
 #include "passes/analysis/userdata_scope.h"
 #include "tests/unit/passes/compile.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace smachac::passes {
+namespace smachac {
 
 enum class IdentifierRules { None, Python, Cpp };
 
@@ -30,4 +30,4 @@ std::optional<std::string> identifierProblem(std::string_view text, IdentifierRu
 /// ASCII lower case, as SMACHA's `lower` filter does for variable names.
 std::string asciiLower(std::string_view text);
 
-}  // namespace smachac::passes
+}  // namespace smachac

@@ -1,5 +1,5 @@
 // Identifier rules per target: character classes, keywords and reserved names.
-#include "passes/analysis/identifiers.h"
+#include "ir/support/identifiers.h"
 
 #include <fmt/core.h>
 
@@ -7,8 +7,9 @@
 #include <span>
 
 #include "ir/support/python_keywords.h"
+#include "ir/support/python_text.h"
 
-namespace smachac::passes {
+namespace smachac {
 namespace {
 
 // C++20 keywords and alternative tokens.
@@ -46,10 +47,6 @@ constexpr std::string_view kCppKeywords[] = {"alignas",       "alignof",     "an
 
 bool isKeyword(std::string_view text, std::span<const std::string_view> keywords) {
   return std::find(keywords.begin(), keywords.end(), text) != keywords.end();
-}
-
-bool isIdentifierChar(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
 }
 
 std::string describeChar(char c) {
@@ -108,4 +105,4 @@ std::string asciiLower(std::string_view text) {
   return lower;
 }
 
-}  // namespace smachac::passes
+}  // namespace smachac

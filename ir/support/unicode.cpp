@@ -1,9 +1,9 @@
 // UTF-8 and Python-compatible character properties and case conversions (see unicode.h).
-#include "backends/tmpl/unicode.h"
+#include "ir/support/unicode.h"
 
 #include <algorithm>
 
-namespace smachac::tmpl::unicode {
+namespace smachac::unicode {
 namespace {
 
 bool inRanges(std::span<const CodeRange> table, char32_t cp) {
@@ -250,4 +250,4 @@ std::string_view strip(std::string_view s, bool left, bool right) {
   return s.substr(begin, end - begin);
 }
 
-}  // namespace smachac::tmpl::unicode
+}  // namespace smachac::unicode

@@ -1,6 +1,6 @@
 // UTF-8 decoding/encoding and the Unicode character properties that Python's str methods use
 // (isspace, isprintable, isalnum, case mapping with final sigma). The property tables are
-// generated from Python 3.11 by tools/gen_unicode_tables.py (unicode_tables.cpp).
+// generated from Python 3.11 by ir/support/tools/gen_unicode_tables.py (unicode_tables.cpp).
 #pragma once
 
 #include <cstdint>
@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace smachac::tmpl::unicode {
+namespace smachac::unicode {
 
 struct CodeRange {
   char32_t first;
@@ -63,4 +63,4 @@ std::string swapcase(std::string_view s);
 /// Python str.strip/lstrip/rstrip with no argument (whitespace).
 std::string_view strip(std::string_view s, bool left = true, bool right = true);
 
-}  // namespace smachac::tmpl::unicode
+}  // namespace smachac::unicode

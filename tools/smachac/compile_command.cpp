@@ -1,4 +1,5 @@
 // `smachac [-target=T] script.yml [-o out]` and `-fsyntax-only`: compile scripts to a target.
+// (`smachac lint` is lint_command.cpp.)
 #include <fmt/core.h>
 
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "tools/smachac/depfile.h"
 #include "tools/smachac/library_output.h"
 #include "tools/smachac/output.h"
+#include "tools/smachac/script_inputs.h"
 #include "tools/smachac/session.h"
 #include "tools/smachac/warning_help.h"
 
@@ -20,7 +22,7 @@ namespace {
 
 struct CompileOptions {
   CommonOptions common;
-  std::vector<std::string> inputs;
+  ScriptInputs scripts;
   std::string output;
   std::string depfile;
   std::string emit;
@@ -28,7 +30,6 @@ struct CompileOptions {
   bool comments = false;
   bool introspection = false;
   bool list_targets = false;
-  bool list_warnings = false;
   int flexbe_ros = 2;
 };
 
@@ -40,21 +41,13 @@ std::string targetNames() {
   return names;
 }
 
-/// What compile and lint share: the inputs, the -W help and --list-warnings.
-void addScriptOptions(CLI::App& app, CompileOptions& o) {
-  app.add_option("inputs", o.inputs, "script files (`-`: standard input)")->type_name("SCRIPT");
-  app.add_flag("--list-warnings", o.list_warnings,
-               "list the diagnostic kinds, their defaults and groups, and exit");
-  app.footer(warningFlagsHelp());
-}
-
 void setUp(CLI::App& app, CompileOptions& o) {
   app.name("smachac");
   app.description(
       "smachac: a compiler for SMACHA state-machine scripts.\n"
       "Subcommands: lint, render, help, contain, extract (run `smachac <subcommand> --help`).");
   app.set_version_flag("--version", fmt::format("smachac {}", kVersion));
-  addScriptOptions(app, o);
+  addScriptInputs(app, o.scripts);
   app.add_option("--target", o.common.target, "output target: " + targetNames());
   app.add_option("-o,--output", o.output, "output file (default: standard output)");
   app.add_option("--emit", o.emit,
@@ -72,18 +65,6 @@ void setUp(CLI::App& app, CompileOptions& o) {
       ->type_name("PATH");
   app.add_flag("--list-targets", o.list_targets, "list the output targets and exit");
   addCommonOptions(app, o.common);
-}
-
-int usageError(const std::string& message) {
-  std::cerr << "smachac: error: " << message << "\n";
-  return kExitUsageError;
-}
-
-int checkOnly(Session& session, const std::vector<std::string>& inputs) {
-  bool ok = true;
-  for (const std::string& input : inputs) ok = session.compile(input).has_value() && ok;
-  session.printDiagnostics();
-  return ok && !session.diags().hasErrors() ? kExitOk : session.failureExitCode();
 }
 
 /// The -emit check: the C++ target emits a `program` or a `library`; others take no -emit.
@@ -131,7 +112,7 @@ int writeOutputs(const CompileOptions& o, const std::string& dir,
 
 int emit(Session& session, const CompileOptions& o, const backends::Target& target,
          const std::optional<LibraryOutput>& library) {
-  std::optional<ir::Module> module = session.compile(o.inputs.front());
+  std::optional<ir::Module> module = session.compile(o.scripts.inputs.front());
   std::optional<std::vector<backends::OutputFile>> files;
   backends::EmitOptions emit_options{.template_dirs = o.common.template_dirs,
                                      .comments = o.comments,
@@ -178,23 +159,23 @@ int runCompile(const Args& raw_args) {
   setUp(app, o);
   if (std::optional<int> code = parseArgs(app, args)) return *code;
   if (o.common.list_passes) return printPassList(), kExitOk;
-  if (o.list_warnings) return printWarningList(), kExitOk;
+  if (o.scripts.list_warnings) return printWarningList(), kExitOk;
   if (o.list_targets) {
     for (const backends::Target& t : backends::targets()) {
       std::cout << fmt::format("{:<10} {}\n", t.name, t.description);
     }
     return kExitOk;
   }
-  if (o.inputs.empty()) return usageError("no input script (see `smachac --help`)");
+  if (o.scripts.inputs.empty()) return usageError("no input script (see `smachac --help`)");
   o.common.sub_script_alone = o.syntax_only;
   Session session;
   if (std::optional<std::string> error = session.configure(warning_flags, o.common)) {
     return usageError(*error);
   }
-  if (o.syntax_only) return checkOnly(session, o.inputs);
-  if (o.inputs.size() > 1) return usageError("one script at a time, unless -fsyntax-only");
+  if (o.syntax_only) return checkScripts(session, o.scripts.inputs);
+  if (o.scripts.inputs.size() > 1) return usageError("one script at a time, unless -fsyntax-only");
   if (!o.depfile.empty() && o.output.empty()) return usageError("--depfile needs -o");
-  if (!o.depfile.empty() && o.inputs.front() == kStandardInputPath) {
+  if (!o.depfile.empty() && o.scripts.inputs.front() == kStandardInputPath) {
     return usageError("--depfile needs a script file, not standard input");
   }
   const backends::Target* target = backends::findTarget(o.common.target);
@@ -208,27 +189,6 @@ int runCompile(const Args& raw_args) {
   std::variant<std::optional<LibraryOutput>, int> library = libraryOutputOf(o);
   if (const int* code = std::get_if<int>(&library)) return *code;
   return emit(session, o, *target, std::get<std::optional<LibraryOutput>>(library));
-}
-
-int runLint(const Args& raw_args) {
-  Args args = raw_args;
-  std::vector<std::string> warning_flags = takeWarningFlags(args);
-  CLI::App app{"smachac lint: check scripts (parse and every pass) and write nothing",
-               "smachac lint"};
-  CompileOptions o;
-  addScriptOptions(app, o);
-  app.add_option("--target", o.common.target, "target whose naming rules apply");
-  addCommonOptions(app, o.common);
-  if (std::optional<int> code = parseArgs(app, args)) return *code;
-  if (o.common.list_passes) return printPassList(), kExitOk;
-  if (o.list_warnings) return printWarningList(), kExitOk;
-  if (o.inputs.empty()) return usageError("lint: no input script (see `smachac lint --help`)");
-  o.common.sub_script_alone = true;
-  Session session;
-  if (std::optional<std::string> error = session.configure(warning_flags, o.common)) {
-    return usageError(*error);
-  }
-  return checkOnly(session, o.inputs);
 }
 
 }  // namespace smachac::driver

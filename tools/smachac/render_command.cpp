@@ -37,11 +37,6 @@ struct RenderOptions {
   std::string output = "-";
 };
 
-int usageError(const std::string& message) {
-  std::cerr << "smachac: error: " << message << "\n";
-  return kExitUsageError;
-}
-
 int reportError(const tmpl::TemplateError& e, const char* kind) {
   std::cerr << e.file();
   if (e.line() > 0) std::cerr << ":" << e.line() << ":" << e.column();

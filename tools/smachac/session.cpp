@@ -134,6 +134,11 @@ std::optional<int> parseArgs(CLI::App& app, const Args& args) {
   return std::nullopt;
 }
 
+int usageError(const std::string& message) {
+  std::cerr << "smachac: error: " << message << "\n";
+  return kExitUsageError;
+}
+
 void printPassList() {
   for (const passes::PassInfo& pass : passes::passTable()) {
     std::cout << fmt::format("{:<28} {:<9} {}\n", pass.name,

@@ -75,4 +75,7 @@ std::optional<int> parseArgs(CLI::App& app, const Args& args);
 /// Prints the pass table (for -list-passes).
 void printPassList();
 
+/// Prints `smachac: error: <message>` and returns the usage error's exit code.
+int usageError(const std::string& message);
+
 }  // namespace smachac::driver

@@ -35,13 +35,15 @@ bool isCppLambda(std::string_view code) {
 }  // namespace
 
 bool checkLambdaLanguage(const ir::Module& module, DiagnosticEmitter& diags, CodeLanguage target) {
-  const DiagKind kind =
-      target == CodeLanguage::Cpp ? DiagKind::PythonCodeInCpp : DiagKind::CppCodeInPython;
   bool clean = true;
   forEachCode(module, [&](const CodeSite& site) {
     const std::string& code = site.value.asExpression().code;
     if (target == CodeLanguage::Cpp ? isPythonLambda(code) : isCppLambda(code)) {
-      diags.emit(kind, site.value.loc, site.what, site.state);
+      if (target == CodeLanguage::Cpp) {
+        diags.emit<DiagKind::PythonCodeInCpp>(site.value.loc, site.what, site.state);
+      } else {
+        diags.emit<DiagKind::CppCodeInPython>(site.value.loc, site.what, site.state);
+      }
       clean = false;
     }
   });

@@ -26,8 +26,8 @@ bool checkPythonCode(const ir::Module& module, DiagnosticEmitter& diags) {
   forEachCode(module, [&](const CodeSite& site) {
     const std::string& code = site.value.asExpression().code;
     if (auto error = pythonExpressionError(code)) {
-      diags.emit(DiagKind::PythonSyntax, site.value.loc, site.what, site.state, error->message,
-                 error->offset + 1, shown(code));
+      diags.emit<DiagKind::PythonSyntax>(site.value.loc, site.what, site.state, error->message,
+                                         error->offset + 1, shown(code));
     }
   });
   return diags.errorCount() == errorsBefore;

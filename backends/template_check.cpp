@@ -102,8 +102,8 @@ class Checker {
     std::optional<std::string> file = env_.resolveScriptTemplate(name.text);
     if (!file) {
       if (reported_.emplace(name.loc.file, name.loc.line, name.loc.column).second) {
-        diags_.emit(DiagKind::UnknownTemplate, name.loc, name.text, generator::describePath(path_),
-                    generator::suggestTemplate(name.text, path_));
+        diags_.emit<DiagKind::UnknownTemplate>(name.loc, name.text, generator::describePath(path_),
+                                               generator::suggestTemplate(name.text, path_));
       }
       return;
     }
@@ -131,8 +131,8 @@ class Checker {
     for (const TemplateVariable& v : meta.variables) {
       if (v.alternative_group >= 0) groups[v.alternative_group].push_back(v.name);
       if (!v.required || given.contains(v.name) || isImplicit(v.name)) continue;
-      diags_.emit(DiagKind::MissingTemplateVariable, s.name.loc, s.name.text, s.template_name->text,
-                  "`" + v.name + "`");
+      diags_.emit<DiagKind::MissingTemplateVariable>(s.name.loc, s.name.text, s.template_name->text,
+                                                     "`" + v.name + "`");
     }
     for (const auto& [group, names] : groups) {
       bool any = false;
@@ -140,8 +140,8 @@ class Checker {
       if (any) continue;
       std::string options;
       for (const std::string& n : names) options += (options.empty() ? "`" : " or `") + n + "`";
-      diags_.emit(DiagKind::MissingTemplateVariable, s.name.loc, s.name.text, s.template_name->text,
-                  "one of " + options);
+      diags_.emit<DiagKind::MissingTemplateVariable>(s.name.loc, s.name.text, s.template_name->text,
+                                                     "one of " + options);
     }
   }
 
@@ -152,8 +152,8 @@ class Checker {
       const TemplateVariable* var = find(meta, a.key.text);
       if (!var) {
         if (isImplicit(a.key.text) || !isIdentifier(a.key.text)) continue;
-        diags_.emit(DiagKind::UnknownTemplateVariable, a.key.loc, a.key.text, s.template_name->text,
-                    didYouMean(a.key.text, declared));
+        diags_.emit<DiagKind::UnknownTemplateVariable>(a.key.loc, a.key.text, s.template_name->text,
+                                                       didYouMean(a.key.text, declared));
         continue;
       }
       checkType(s, a, *var);
@@ -167,8 +167,9 @@ class Checker {
     }
     std::string declared;
     for (const std::string& t : var.types) declared += (declared.empty() ? "" : " or ") + t;
-    diags_.emit(DiagKind::TemplateVariableType, a.value.loc, a.key.text, s.name.text,
-                ir::Type::ofValue(a.value).str(), s.template_name->text, declared);
+    diags_.emit<DiagKind::TemplateVariableType>(a.value.loc, a.key.text, s.name.text,
+                                                ir::Type::ofValue(a.value).str(),
+                                                s.template_name->text, declared);
   }
 
   static const TemplateVariable* find(const TemplateMeta& meta, const std::string& name) {

@@ -95,7 +95,7 @@ class Resolver {
   }
 
   void report(const Value& list, const std::string& reason) {
-    diags_.emit(DiagKind::UnresolvedLookup, list.loc, spell(*lookupKey(list)), reason);
+    diags_.emit<DiagKind::UnresolvedLookup>(list.loc, spell(*lookupKey(list)), reason);
   }
 
   /// A string construct: joins the parts when at least one is a lookup.

@@ -65,7 +65,7 @@ class Lowering {
   bool lowerRoot(Value& root) {
     if (!root.isMap()) {
       SourceLoc where = root.loc.hasFile() ? root.loc : SourceLoc{module_.files()[0], 0, 0, 1};
-      diags_.emit(DiagKind::RootNotMapping, where, describeValue(root));
+      diags_.emit<DiagKind::RootNotMapping>(where, describeValue(root));
       if (isSubScript(root)) {
         diags_.note(where,
                     "this is a sub-script: compile a script that includes it; `smachac lint` "
@@ -88,9 +88,9 @@ class Lowering {
   void lowerStates(Value& states, StateId parent, Level& level,
                    const std::vector<IncludeFrame>& includes) {
     if (!states.isList()) {
-      diags_.emit(DiagKind::InvalidKeyType, states.loc,
-                  fmt::format("`states` of {}", describeState(parent)), "a list of states",
-                  describeValue(states));
+      diags_.emit<DiagKind::InvalidKeyType>(states.loc,
+                                            fmt::format("`states` of {}", describeState(parent)),
+                                            "a list of states", describeValue(states));
       return;
     }
     for (Value& entry : states.asList()) {
@@ -102,13 +102,13 @@ class Lowering {
         std::string found = entry.isMap()
                                 ? fmt::format("a mapping of {} keys", entry.asMap().size())
                                 : describeValue(entry);
-        diags_.emit(DiagKind::MalformedState, entry.loc, found);
+        diags_.emit<DiagKind::MalformedState>(entry.loc, found);
         continue;
       }
       ir::MapEntry& state = entry.asMap().front();
       if (!state.value.isMap()) {
-        diags_.emit(DiagKind::InvalidStateBody, state.value.loc, state.key,
-                    describeValue(state.value));
+        diags_.emit<DiagKind::InvalidStateBody>(state.value.loc, state.key,
+                                                describeValue(state.value));
         continue;
       }
       expandShorthand(state.value, diags_);
@@ -124,7 +124,7 @@ class Lowering {
   void lowerState(const ir::Name& name, Value& vars, StateId parent, Level& level,
                   const std::vector<IncludeFrame>& includes,
                   std::vector<ir::Inclusion> included_from) {
-    if (name.text.empty()) diags_.emit(DiagKind::EmptyName, name.loc, "a state name");
+    if (name.text.empty()) diags_.emit<DiagKind::EmptyName>(name.loc, "a state name");
     inheritParams(vars, level.params);
     resolveLookups(vars, diags_);
     if (vars.find("states")) {
@@ -153,7 +153,7 @@ class Lowering {
                  std::vector<ir::Inclusion> included_from) {
     StateId id = addState(name, vars, ir::StateKind::Leaf, parent, std::move(included_from));
     if (!module_.state(id).template_name && !vars.find("template")) {
-      diags_.emit(DiagKind::MissingKey, name.loc, fmt::format("state `{}`", name.text), "template");
+      diags_.emit<DiagKind::MissingKey>(name.loc, fmt::format("state `{}`", name.text), "template");
     }
   }
 
@@ -166,14 +166,14 @@ class Lowering {
   void lowerContainer(const ir::Name& name, Value& vars, StateId parent, const Level& level,
                       const std::vector<IncludeFrame>& includes,
                       std::vector<ir::Inclusion> included_from) {
-    if (vars.find("script")) diags_.emit(DiagKind::StatesWithScript, name.loc, name.text);
+    if (vars.find("script")) diags_.emit<DiagKind::StatesWithScript>(name.loc, name.text);
     StateId id = addState(name, vars, containerKind(vars), parent, std::move(included_from));
     if (!module_.state(id).template_name && !vars.find("template")) {
-      diags_.emit(DiagKind::MissingKey, name.loc, fmt::format("container `{}`", name.text),
-                  "template");
+      diags_.emit<DiagKind::MissingKey>(name.loc, fmt::format("container `{}`", name.text),
+                                        "template");
     }
     if (level.depth + 1 > kMaxContainerDepth) {
-      diags_.emit(DiagKind::NestingTooDeep, name.loc, kMaxContainerDepth);
+      diags_.emit<DiagKind::NestingTooDeep>(name.loc, kMaxContainerDepth);
       return;
     }
     const ir::State& container = module_.state(id);
@@ -194,8 +194,8 @@ class Lowering {
     if (!enterInclude(script, *sub, includes)) return;
     Value sub_vars = sub->entry.value;
     if (!sub_vars.isMap()) {
-      diags_.emit(DiagKind::InvalidStateBody, sub_vars.loc, sub->entry.key,
-                  describeValue(sub_vars));
+      diags_.emit<DiagKind::InvalidStateBody>(sub_vars.loc, sub->entry.key,
+                                              describeValue(sub_vars));
       return;
     }
     expandShorthand(sub_vars, diags_);
@@ -235,11 +235,11 @@ class Lowering {
       if (frame.canonical_path != sub.canonical_path) continue;
       std::string chain = sources_.path(module_.files()[0]);
       for (const IncludeFrame& f : includes) chain += " -> " + f.display_path;
-      diags_.emit(DiagKind::IncludeCycle, script.loc, script.text, chain + " -> " + display);
+      diags_.emit<DiagKind::IncludeCycle>(script.loc, script.text, chain + " -> " + display);
       return false;
     }
     if (includes.size() >= kMaxIncludeDepth) {
-      diags_.emit(DiagKind::IncludeTooDeep, script.loc, kMaxIncludeDepth);
+      diags_.emit<DiagKind::IncludeTooDeep>(script.loc, kMaxIncludeDepth);
       return false;
     }
     includes.push_back({sub.canonical_path, display});
@@ -267,7 +267,7 @@ class Lowering {
                  e.key == "autonomy") {
         sub.asMap().push_back(e);
       } else if (e.key != "params") {
-        diags_.emit(DiagKind::IgnoredIncludeKey, e.key_loc, e.key, name.text);
+        diags_.emit<DiagKind::IgnoredIncludeKey>(e.key_loc, e.key, name.text);
       }
     }
   }

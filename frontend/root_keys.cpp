@@ -38,14 +38,14 @@ bool buildRootState(const ir::Value& root, ir::State& state, DiagnosticEmitter& 
     } else if (isKnown(e.key)) {
       typed.asMap().push_back(e);
     } else {
-      diags.emit(DiagKind::UnknownRootKey, e.key_loc, e.key, didYouMean(e.key, knownRootKeys()));
+      diags.emit<DiagKind::UnknownRootKey>(e.key_loc, e.key, didYouMean(e.key, knownRootKeys()));
     }
   }
   buildStateFields(typed, state, "the script", diags);
   bool complete = true;
   for (const char* key : {"name", "template", "states"}) {
     if (!root.find(key)) {
-      diags.emit(DiagKind::MissingKey, root.loc, "the script", key);
+      diags.emit<DiagKind::MissingKey>(root.loc, "the script", key);
       complete = false;
     }
   }

@@ -47,7 +47,7 @@ void expandShorthand(ir::Value& mapping, DiagnosticEmitter& diags) {
   for (ir::MapEntry& entry : entries) {
     std::optional<std::string_view> longhand = longhandOf(entry.key);
     if (longhand && mapping.find(*longhand)) {
-      diags.emit(DiagKind::ShorthandConflict, entry.key_loc, entry.key, *longhand);
+      diags.emit<DiagKind::ShorthandConflict>(entry.key_loc, entry.key, *longhand);
       continue;
     }
     if (longhand) entry.key = std::string(*longhand);

@@ -30,8 +30,8 @@ bool readStringName(const Value& v, ir::Name& out) {
 void readNameList(const Value& v, std::string_view key, std::string_view what,
                   std::vector<ir::Name>& out, DiagnosticEmitter& diags) {
   if (!v.isList()) {
-    diags.emit(DiagKind::InvalidKeyType, v.loc, field(key, what), "a list of names",
-               describeValue(v));
+    diags.emit<DiagKind::InvalidKeyType>(v.loc, field(key, what), "a list of names",
+                                         describeValue(v));
     return;
   }
   for (const Value& item : v.asList()) {
@@ -47,7 +47,7 @@ bool forEachEntry(const Value& v, std::string_view key, std::string_view what,
                   std::string_view expected, const std::function<void(const ir::MapEntry&)>& each,
                   DiagnosticEmitter& diags) {
   if (!v.isMap()) {
-    diags.emit(DiagKind::InvalidKeyType, v.loc, field(key, what), expected, describeValue(v));
+    diags.emit<DiagKind::InvalidKeyType>(v.loc, field(key, what), expected, describeValue(v));
     return false;
   }
   for (const ir::MapEntry& entry : v.asMap()) each(entry);
@@ -102,8 +102,9 @@ void readOutcomeMap(const Value& v, std::string_view what, ir::State& state,
       [&](const ir::MapEntry& e) {
         ir::OutcomeMapEntry entry{keyName(e), {}};
         if (!e.value.isMap()) {
-          diags.emit(DiagKind::InvalidKeyType, e.value.loc, inner_what,
-                     "a mapping from child state to its outcome", describeValue(e.value));
+          diags.emit<DiagKind::InvalidKeyType>(e.value.loc, inner_what,
+                                               "a mapping from child state to its outcome",
+                                               describeValue(e.value));
           return;
         }
         for (const ir::MapEntry& c : e.value.asMap()) {
@@ -146,7 +147,7 @@ bool readCoreKey(const ir::MapEntry& e, std::string_view what, ir::State& state,
     if (v.isMap())
       state.params = v;
     else
-      diags.emit(DiagKind::InvalidKeyType, v.loc, field(key, what), "a mapping", describeValue(v));
+      diags.emit<DiagKind::InvalidKeyType>(v.loc, field(key, what), "a mapping", describeValue(v));
   } else if (key == "default_outcome") {
     ir::Name name;
     if (readName(v, field(key, what), name, diags)) state.default_outcome = name;
@@ -160,12 +161,12 @@ bool readCoreKey(const ir::MapEntry& e, std::string_view what, ir::State& state,
 
 bool readName(const Value& value, std::string_view what, ir::Name& out, DiagnosticEmitter& diags) {
   if (!isScalarName(value)) {
-    diags.emit(DiagKind::InvalidKeyType, value.loc, what, "a name", describeValue(value));
+    diags.emit<DiagKind::InvalidKeyType>(value.loc, what, "a name", describeValue(value));
     return false;
   }
   out = {value.isString() ? value.asString() : ir::pythonStr(value), value.loc};
   if (out.text.empty()) {
-    diags.emit(DiagKind::EmptyName, value.loc, what);
+    diags.emit<DiagKind::EmptyName>(value.loc, what);
     return false;
   }
   return true;

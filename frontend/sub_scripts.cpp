@@ -67,13 +67,13 @@ std::optional<SubScriptState> SubScriptLoader::load(const ir::Name& script) {
     if (!it->second.root) return std::nullopt;
     std::string dir = fs::path(sources_.path(script.loc.file)).parent_path().string();
     if (climbsOut(script.text, dir, canonical)) {
-      diags_.emit(DiagKind::SubScriptOutsideDir, script.loc, script.text, path);
+      diags_.emit<DiagKind::SubScriptOutsideDir>(script.loc, script.text, path);
     }
     std::optional<SubScriptState> state = validate(it->second.file, *it->second.root);
     if (state) state->canonical_path = canonical;
     return state;
   }
-  diags_.emit(DiagKind::SubScriptNotFound, script.loc, script.text);
+  diags_.emit<DiagKind::SubScriptNotFound>(script.loc, script.text);
   for (const std::string& path : tried) diags_.note({}, fmt::format("looked for `{}`", path));
   return std::nullopt;
 }
@@ -91,7 +91,7 @@ std::optional<SubScriptState> SubScriptLoader::validate(uint32_t file, const ir:
     return SubScriptState{file, {}, root.asList()[0].asMap()[0]};
   }
   SourceLoc where = root.loc.hasFile() ? root.loc : SourceLoc{file, 1, 1, 1};
-  diags_.emit(DiagKind::SubScriptNotOneState, where, sources_.path(file), found);
+  diags_.emit<DiagKind::SubScriptNotOneState>(where, sources_.path(file), found);
   return std::nullopt;
 }
 

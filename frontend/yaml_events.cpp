@@ -91,15 +91,15 @@ std::optional<ir::Value> buildYamlValueWithYamlCpp(uint32_t file, std::string_vi
     parser.HandleNextDocument(events);
     DocumentStart second;
     if (parser.HandleNextDocument(second)) {
-      diags.emit(DiagKind::MultipleDocuments, markLoc(file, second.mark()));
+      diags.emit<DiagKind::MultipleDocuments>(markLoc(file, second.mark()));
       return std::nullopt;
     }
   } catch (const YAML::DeepRecursion& e) {
-    diags.emit(DiagKind::YamlTooComplex, markLoc(file, e.mark),
-               "YAML nested too deeply for the parser");
+    diags.emit<DiagKind::YamlTooComplex>(markLoc(file, e.mark),
+                                         "YAML nested too deeply for the parser");
     return std::nullopt;
   } catch (const YAML::Exception& e) {
-    diags.emit(DiagKind::YamlSyntax, markLoc(file, e.mark), e.msg);
+    diags.emit<DiagKind::YamlSyntax>(markLoc(file, e.mark), e.msg);
     if (std::optional<std::string> hint = yamlSyntaxHint(e.msg)) {
       diags.note(markLoc(file, e.mark), *hint);
     }

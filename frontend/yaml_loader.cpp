@@ -19,22 +19,22 @@ std::optional<std::string> readRegularFile(const std::string& path, SourceLoc fr
   std::error_code ec;
   fs::file_status status = fs::status(path, ec);
   if (ec || !fs::exists(status)) {
-    diags.emit(DiagKind::FileNotFound, from, path, "no such file");
+    diags.emit<DiagKind::FileNotFound>(from, path, "no such file");
     return std::nullopt;
   }
   if (!fs::is_regular_file(status)) {
-    diags.emit(DiagKind::UnreadableFile, from, path,
-               fs::is_directory(status) ? "it is a directory" : "it is not a regular file");
+    diags.emit<DiagKind::UnreadableFile>(
+        from, path, fs::is_directory(status) ? "it is a directory" : "it is not a regular file");
     return std::nullopt;
   }
   uintmax_t size = fs::file_size(path, ec);
   if (!ec && size > kMaxScriptBytes) {
-    diags.emit(DiagKind::FileTooLarge, from, path, size, kMaxScriptBytes);
+    diags.emit<DiagKind::FileTooLarge>(from, path, size, kMaxScriptBytes);
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    diags.emit(DiagKind::UnreadableFile, from, path, "permission denied or unreadable");
+    diags.emit<DiagKind::UnreadableFile>(from, path, "permission denied or unreadable");
     return std::nullopt;
   }
   std::string text;
@@ -51,8 +51,8 @@ std::optional<ir::Value> parseYaml(uint32_t file, const SourceManager& sources,
   std::string_view text = sources.content(file);
   if (std::optional<size_t> bad = findInvalidUtf8(text)) {
     bool nul = text[*bad] == '\0';
-    diags.emit(DiagKind::InvalidEncoding, sources.locOf(file, *bad),
-               nul ? "NUL byte in YAML text" : "invalid UTF-8 byte sequence");
+    diags.emit<DiagKind::InvalidEncoding>(
+        sources.locOf(file, *bad), nul ? "NUL byte in YAML text" : "invalid UTF-8 byte sequence");
     return std::nullopt;
   }
   return buildYamlValue(file, text, diags);

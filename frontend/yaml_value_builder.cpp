@@ -48,7 +48,7 @@ void YamlValueBuilder::onNull(YamlMark mark, uint64_t anchor) {
 void YamlValueBuilder::onAlias(YamlMark mark, uint64_t anchor) {
   auto it = anchors_.find(anchor);
   if (it == anchors_.end()) {
-    fail(DiagKind::YamlSyntax, loc(mark), "alias of an anchor that is not complete here");
+    fail<DiagKind::YamlSyntax>(loc(mark), "alias of an anchor that is not complete here");
     return;
   }
   if (!charge(it->second.nodes, loc(mark))) return;
@@ -70,14 +70,14 @@ void YamlValueBuilder::onScalar(YamlMark mark, std::string_view tag, uint64_t an
     return;
   }
   ScalarResult r = resolveScalar(value, quoted ? ScalarStyle::Quoted : ScalarStyle::Plain, tag, l);
-  if (r.int_overflow) report(DiagKind::IntegerOutOfRange, l, value);
+  if (r.int_overflow) report<DiagKind::IntegerOutOfRange>(l, value);
   finish(std::move(r.value), anchor, false);
 }
 
 ir::Value YamlValueBuilder::portableExpr(YamlMark mark, std::string_view value) {
   std::optional<ExprScalarError> error;
   ir::Value v = exprs_.read(mark.line, mark.column, value, error);
-  if (error) report(DiagKind::ExprSyntax, error->loc, error->message);
+  if (error) report<DiagKind::ExprSyntax>(error->loc, error->message);
   return v;
 }
 
@@ -111,22 +111,23 @@ SourceLoc YamlValueBuilder::loc(YamlMark mark, size_t length) const {
           static_cast<uint32_t>(std::max<size_t>(length, 1))};
 }
 
-template <typename... Args>
-void YamlValueBuilder::report(DiagKind kind, SourceLoc where, const Args&... args) {
+template <DiagKind Kind, typename... Args>
+void YamlValueBuilder::report(SourceLoc where, const Args&... args) {
   if (policy_ == YamlProblems::GiveUp) {
     gave_up_ = true;
     aborted_ = true;
     return;
   }
-  diags_.emit(kind, where, args...);
+  diags_.emit<Kind>(where, args...);
 }
 
 void YamlValueBuilder::note(SourceLoc where, std::string message) {
   if (policy_ == YamlProblems::Report) diags_.note(where, std::move(message));
 }
 
-void YamlValueBuilder::fail(DiagKind kind, SourceLoc where, const std::string& message) {
-  if (!aborted_) report(kind, where, message);
+template <DiagKind Kind>
+void YamlValueBuilder::fail(SourceLoc where, const std::string& message) {
+  if (!aborted_) report<Kind>(where, message);
   aborted_ = true;
 }
 
@@ -137,9 +138,9 @@ bool YamlValueBuilder::awaitingKey() const {
 bool YamlValueBuilder::charge(size_t nodes, SourceLoc where) {
   nodes_ += nodes;
   if (nodes_ > kMaxYamlNodes) {
-    fail(DiagKind::YamlTooComplex, where,
-         fmt::format("YAML document expands to more than {} nodes (aliases included)",
-                     kMaxYamlNodes));
+    fail<DiagKind::YamlTooComplex>(
+        where, fmt::format("YAML document expands to more than {} nodes (aliases included)",
+                           kMaxYamlNodes));
   }
   return !aborted_;
 }
@@ -147,8 +148,8 @@ bool YamlValueBuilder::charge(size_t nodes, SourceLoc where) {
 bool YamlValueBuilder::chargeAliasText(size_t bytes, SourceLoc where) {
   alias_bytes_ += bytes;
   if (alias_bytes_ > kMaxYamlAliasBytes) {
-    fail(DiagKind::YamlTooComplex, where,
-         fmt::format("YAML aliases copy more than {} MiB of text", kMaxYamlAliasBytes >> 20));
+    fail<DiagKind::YamlTooComplex>(
+        where, fmt::format("YAML aliases copy more than {} MiB of text", kMaxYamlAliasBytes >> 20));
   }
   return !aborted_;
 }
@@ -156,8 +157,8 @@ bool YamlValueBuilder::chargeAliasText(size_t bytes, SourceLoc where) {
 void YamlValueBuilder::open(bool is_map, SourceLoc where, uint64_t anchor) {
   if (aborted_) return;
   if (depth_ >= kMaxYamlDepth) {
-    fail(DiagKind::YamlTooComplex, where,
-         fmt::format("YAML nested more than {} levels deep", kMaxYamlDepth));
+    fail<DiagKind::YamlTooComplex>(
+        where, fmt::format("YAML nested more than {} levels deep", kMaxYamlDepth));
     return;
   }
   if (depth_ == stack_.size()) stack_.emplace_back();
@@ -204,7 +205,7 @@ void YamlValueBuilder::rejectKey(Frame& parent, const ir::Value& key) {
     parent.key_loc = key.loc;
     return;
   }
-  report(DiagKind::NonScalarKey, key.loc, key.isMap() ? "a mapping" : "a sequence");
+  report<DiagKind::NonScalarKey>(key.loc, key.isMap() ? "a mapping" : "a sequence");
 }
 
 void YamlValueBuilder::acceptValue(Frame& parent, ir::Value v, bool is_null) {
@@ -213,7 +214,7 @@ void YamlValueBuilder::acceptValue(Frame& parent, ir::Value v, bool is_null) {
   if (is_null && v.loc.line != parent.key_loc.line) v.loc = parent.key_loc;
   for (const ir::MapEntry& e : parent.entries) {
     if (e.key != parent.key) continue;
-    report(DiagKind::DuplicateKey, parent.key_loc, parent.key);
+    report<DiagKind::DuplicateKey>(parent.key_loc, parent.key);
     note(e.key_loc, "first defined here");
     return;
   }

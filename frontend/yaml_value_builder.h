@@ -79,10 +79,11 @@ class YamlValueBuilder {
 
   SourceLoc loc(YamlMark mark, size_t length = 1) const;
   ir::Value portableExpr(YamlMark mark, std::string_view value);
-  template <typename... Args>
-  void report(DiagKind kind, SourceLoc where, const Args&... args);
+  template <DiagKind Kind, typename... Args>
+  void report(SourceLoc where, const Args&... args);
   void note(SourceLoc where, std::string message);
-  void fail(DiagKind kind, SourceLoc where, const std::string& message);
+  template <DiagKind Kind>
+  void fail(SourceLoc where, const std::string& message);
   bool awaitingKey() const;
   bool charge(size_t nodes, SourceLoc where);
   bool chargeAliasText(size_t bytes, SourceLoc where);

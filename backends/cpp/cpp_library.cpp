@@ -38,7 +38,7 @@ std::optional<std::string> renderLibraryHeader(const ir::Module& module, tmpl::E
     return text.substr(begin, end - begin + 1) + "\n";
   } catch (const tmpl::TemplateError& e) {
     generator::TemplateFiles files(context.sources, path.builtins);
-    context.diags.emit(DiagKind::TemplateError, files.locate(e), e.message());
+    context.diags.emit<DiagKind::TemplateError>(files.locate(e), e.message());
     return std::nullopt;
   }
 }

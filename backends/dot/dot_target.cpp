@@ -43,7 +43,7 @@ std::optional<std::vector<OutputFile>> emitDot(const ir::Module& module, EmitCon
     std::string text = env.render("Graph.tpl.dot", vars);
     return std::vector<OutputFile>{{"", text + "\n"}};
   } catch (const tmpl::TemplateError& e) {
-    context.diags.emit(DiagKind::TemplateError, SourceLoc{}, fmt::format("{}", e.what()));
+    context.diags.emit<DiagKind::TemplateError>(SourceLoc{}, fmt::format("{}", e.what()));
     return std::nullopt;
   }
 }

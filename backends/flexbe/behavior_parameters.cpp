@@ -87,7 +87,7 @@ std::vector<BehaviorParameter> scriptParameters(const ir::State& root, Diagnosti
   if (!root.params || !root.params->isMap()) return {};
   for (const ir::MapEntry& entry : root.params->asMap()) {
     if (std::optional<std::string> why = parameterRejection(entry.key, entry.value)) {
-      diags.emit(DiagKind::FlexbeParameterSubstituted, entry.key_loc, entry.key, *why);
+      diags.emit<DiagKind::FlexbeParameterSubstituted>(entry.key_loc, entry.key, *why);
     }
   }
   return behaviorParameters(*root.params, std::nullopt);

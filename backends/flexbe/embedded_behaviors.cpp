@@ -30,7 +30,7 @@ void collect(const ir::Module& module, ir::StateId id, DiagnosticEmitter& diags,
   if (state.included_from.empty() || state.kind != ir::StateKind::StateMachine) return;
   const ir::Inclusion& inclusion = state.included_from.front();
   if (const ir::Name* key = unpassableKey(inclusion)) {
-    diags.emit(DiagKind::FlexbeInlinedSubScript, key->loc, inclusion.script.text, key->text);
+    diags.emit<DiagKind::FlexbeInlinedSubScript>(key->loc, inclusion.script.text, key->text);
     return;
   }
   out.push_back(id);

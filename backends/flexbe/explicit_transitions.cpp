@@ -106,8 +106,9 @@ void addDefaultConditions(ir::Module& module, ir::StateId id,
   if (!concurrence.default_outcome || concurrence.children.empty()) return;
   std::optional<ir::Value> conditions = outcomeCombinations(module, concurrence, template_outcomes);
   if (!conditions) {
-    diags.emit(DiagKind::FlexbeDefaultOutcomeLost, concurrence.default_outcome->loc,
-               concurrence.name.text, kMaxDefaultConditions, concurrence.default_outcome->text);
+    diags.emit<DiagKind::FlexbeDefaultOutcomeLost>(concurrence.default_outcome->loc,
+                                                   concurrence.name.text, kMaxDefaultConditions,
+                                                   concurrence.default_outcome->text);
     return;
   }
   module.state(id).args.push_back({{"default_conditions", {}}, std::move(*conditions)});

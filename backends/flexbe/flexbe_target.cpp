@@ -38,7 +38,7 @@ bool keepManualSections(std::vector<OutputFile>& files, const EmitContext& conte
     if (!existing) continue;
     std::optional<std::string> merged = flexbe::keepManualSections(file.content, *existing);
     if (!merged) {
-      context.diags.emit(DiagKind::FlexbeManualSectionBroken, SourceLoc{}, dir + "/" + file.name);
+      context.diags.emit<DiagKind::FlexbeManualSectionBroken>(SourceLoc{}, dir + "/" + file.name);
       return false;
     }
     file.content = std::move(*merged);

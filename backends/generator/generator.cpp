@@ -189,8 +189,8 @@ class Generator {
       if (own) {
         if (own->empty()) continue;
         if (spec.kind == BufferKind::Keyed) {
-          ctx_.diags.emit(DiagKind::ContainerReplacesCollectedBlock, state.template_name->loc, name,
-                          spec.name);
+          ctx_.diags.emit<DiagKind::ContainerReplacesCollectedBlock>(state.template_name->loc, name,
+                                                                     spec.name);
           failed_ = true;
           continue;
         }
@@ -223,8 +223,8 @@ class Generator {
     if (!reported_unknown_.emplace(name.loc.file, name.loc.line, name.loc.column).second) {
       return std::nullopt;
     }
-    ctx_.diags.emit(DiagKind::UnknownTemplate, name.loc, name.text, describePath(ctx_.path),
-                    suggestTemplate(name.text, ctx_.path));
+    ctx_.diags.emit<DiagKind::UnknownTemplate>(name.loc, name.text, describePath(ctx_.path),
+                                               suggestTemplate(name.text, ctx_.path));
     return std::nullopt;
   }
 
@@ -239,7 +239,7 @@ class Generator {
       failed_ = true;
       auto key = std::make_tuple(e.file(), e.line(), e.column(), e.message());
       if (!reported_errors_.insert(key).second) return false;
-      ctx_.diags.emit(DiagKind::TemplateError, files_.locate(e), e.message());
+      ctx_.diags.emit<DiagKind::TemplateError>(files_.locate(e), e.message());
       SourceLoc where = state.template_name ? state.template_name->loc : state.loc;
       ctx_.diags.note(where, "while rendering template `" + templateText(state) + "` for `" +
                                  state.name.text + "`");

@@ -35,8 +35,8 @@ void checkMapOrder(const ir::Value& value, const std::string& key, DiagnosticEmi
   const ir::Map& entries = value.asMap();
   for (size_t i = 1; i < entries.size(); ++i) {
     if (entries[i].key < entries[i - 1].key) {
-      diags.emit(DiagKind::SmachMapOrder, entries[i].key_loc, key, entries[i].key,
-                 entries[i - 1].key);
+      diags.emit<DiagKind::SmachMapOrder>(entries[i].key_loc, key, entries[i].key,
+                                          entries[i - 1].key);
       break;
     }
   }
@@ -47,10 +47,10 @@ void checkUserdataEntry(const ir::Argument& entry, DiagnosticEmitter& diags) {
   const std::string& key = entry.key.text;
   std::string lowered = unicode::toLower(key);
   if (lowered != key) {
-    diags.emit(DiagKind::SmachLowercasedUserdataKey, entry.key.loc, key, lowered, key);
+    diags.emit<DiagKind::SmachLowercasedUserdataKey>(entry.key.loc, key, lowered, key);
   }
   if (std::optional<std::string> code = bareCode(entry.value)) {
-    diags.emit(DiagKind::SmachStringAsCode, entry.value.loc, key, entry.value.asString(), *code);
+    diags.emit<DiagKind::SmachStringAsCode>(entry.value.loc, key, entry.value.asString(), *code);
   }
   checkMapOrder(entry.value, key, diags);
 }
@@ -99,7 +99,7 @@ class CallbackLeaks {
       who += fmt::format(" and {} more state{}", receivers.size() - 1,
                          receivers.size() > 2 ? "s" : "");
     }
-    diags_.emit(DiagKind::SmachLeakedCallbacks, source.name.loc, source.name.text, who);
+    diags_.emit<DiagKind::SmachLeakedCallbacks>(source.name.loc, source.name.text, who);
   }
 
   const ir::Module& module_;

@@ -27,6 +27,32 @@ struct DiagKindInfo {
 };
 
 const DiagKindInfo& diagKindInfo(DiagKind kind);
+
+/// The message format of a kind, at compile time: DiagnosticEmitter::emit checks the
+/// arguments of every diagnostic against it when the call is compiled.
+constexpr std::string_view diagKindFormat(DiagKind kind) {
+  switch (kind) {
+#define SMACHAC_DIAGNOSTIC(id, name, severity, adjustable, format) \
+  case DiagKind::id:                                               \
+    return format;
+#include "ir/support/diagnostic_kinds.def"
+  }
+  return "";
+}
+
+/// The number of `{}` fields of a message format (`{{` is a literal brace).
+constexpr size_t formatFieldCount(std::string_view format) {
+  size_t count = 0;
+  for (size_t i = 0; i < format.size(); ++i) {
+    if (format[i] != '{') continue;
+    if (i + 1 < format.size() && format[i + 1] == '{') {
+      ++i;
+    } else {
+      ++count;
+    }
+  }
+  return count;
+}
 std::vector<DiagKind> allDiagKinds();
 std::optional<DiagKind> diagKindByName(std::string_view name);
 std::string_view severityName(Severity severity);

@@ -1,6 +1,8 @@
-// The one channel for problems in the user's input. Checks call emit() with a kind from
-// diagnostic_kinds.def and the arguments of its message; the emitter applies -W options and
-// collects the diagnostics for a DiagnosticPrinter.
+// The one channel for problems in the user's input. Checks call emit<Kind>() with a kind from
+// diagnostic_kinds.def and the arguments of its message, which fmt checks against the kind's
+// format when the call is compiled (a wrong count or an unformattable argument does not
+// build); the emitter applies -W options and collects the diagnostics for a
+// DiagnosticPrinter.
 #pragma once
 
 #include <fmt/core.h>
@@ -17,12 +19,12 @@ class DiagnosticEmitter {
  public:
   explicit DiagnosticEmitter(WarningOptions options = {}) : options_(std::move(options)) {}
 
-  template <typename... Args>
-  void emit(DiagKind kind, SourceLoc loc, const Args&... args) {
-    report(kind, loc,
-           fmt::vformat(
-               fmt::string_view(diagKindInfo(kind).format.data(), diagKindInfo(kind).format.size()),
-               fmt::make_format_args(args...)));
+  template <DiagKind Kind, typename... Args>
+  void emit(SourceLoc loc, const Args&... args) {
+    static_assert(sizeof...(Args) == formatFieldCount(diagKindFormat(Kind)),
+                  "the arguments of a diagnostic must match its message's {} fields");
+    report(Kind, loc,
+           fmt::format(fmt::format_string<const Args&...>(diagKindFormat(Kind)), args...));
   }
 
   /// Attaches a note to the diagnostic emitted last (dropped if that one was silenced).

@@ -82,8 +82,8 @@ ir::Type ExprTyper::name(const ir::ExprNode& node) {
     case ir::ExprNameKind::Param:
       if (bound.param->asPortable()) {
         // Its names would be bound in this state again (and could name the param itself).
-        diags_.emit(DiagKind::ExprOutsideCallback, bound.param->loc, "param `" + node.name + "`",
-                    state_->name.text);
+        diags_.emit<DiagKind::ExprOutsideCallback>(bound.param->loc, "param `" + node.name + "`",
+                                                   state_->name.text);
         return ir::Type::any();
       }
       return ir::Type::ofValue(*bound.param);
@@ -107,7 +107,7 @@ ir::Type ExprTyper::unknownName(const ir::ExprNode& node) {
   for (const ir::Name& key : state_->output_keys) is_output = is_output || key.text == node.name;
   bool in_scope = state_->parent.valid() && key_types_.find(state_->parent, node.name);
   if (is_output || in_scope) {
-    diags_.emit(DiagKind::ExprKeyNotInput, node.loc, node.name, state_->name.text);
+    diags_.emit<DiagKind::ExprKeyNotInput>(node.loc, node.name, state_->name.text);
     diags_.note(node.loc,
                 fmt::format("add `{}` to the `input_keys` of `{}`", node.name, state_->name.text));
     return ir::Type::any();
@@ -117,8 +117,8 @@ ir::Type ExprTyper::unknownName(const ir::ExprNode& node) {
   if (state_->params && state_->params->isMap()) {
     for (const ir::MapEntry& entry : state_->params->asMap()) candidates.push_back(entry.key);
   }
-  diags_.emit(DiagKind::ExprUnknownName, node.loc, node.name, state_->name.text,
-              didYouMean(node.name, candidates));
+  diags_.emit<DiagKind::ExprUnknownName>(node.loc, node.name, state_->name.text,
+                                         didYouMean(node.name, candidates));
   return ir::Type::any();
 }
 
@@ -172,7 +172,7 @@ ir::Type ExprTyper::arithmetic(const ir::ExprNode& node, const ir::Type& left,
 void ExprTyper::checkDivisor(const ir::ExprNode& division) {
   const ir::ExprNode& divisor = division.operands[1];
   if (isLiteralZero(divisor)) {
-    diags_.emit(DiagKind::ExprDivisionByZero, divisor.loc, ir::exprOpText(division.op));
+    diags_.emit<DiagKind::ExprDivisionByZero>(divisor.loc, ir::exprOpText(division.op));
   }
 }
 
@@ -182,8 +182,8 @@ ir::Type ExprTyper::call(const ir::ExprNode& node) {
   const ir::ExprFunction* function = ir::findExprFunction(node.name);
   if (!function) {
     std::vector<std::string> names{"len", "min", "max", "abs"};
-    diags_.emit(DiagKind::ExprUnknownFunction, node.loc, node.name, ir::exprFunctionList(),
-                didYouMean(node.name, names));
+    diags_.emit<DiagKind::ExprUnknownFunction>(node.loc, node.name, ir::exprFunctionList(),
+                                               didYouMean(node.name, names));
     return ir::Type::any();
   }
   uint32_t count = static_cast<uint32_t>(arguments.size());
@@ -191,7 +191,7 @@ ir::Type ExprTyper::call(const ir::ExprNode& node) {
     std::string expected = function->min_args == function->max_args
                                ? argumentCount(function->min_args)
                                : "at least " + argumentCount(function->min_args);
-    diags_.emit(DiagKind::ExprArgumentCount, node.loc, node.name, expected, count);
+    diags_.emit<DiagKind::ExprArgumentCount>(node.loc, node.name, expected, count);
     return ir::Type::any();
   }
   if (node.name == "min" || node.name == "max") return minMax(node, arguments);
@@ -228,7 +228,7 @@ ir::Type ExprTyper::minMax(const ir::ExprNode& node, std::span<const ir::Type> a
 ir::Type ExprTyper::mismatch(const ir::ExprNode& node, const std::string& operands) {
   std::string_view what =
       node.op == ExprOp::Call ? std::string_view(node.name) : ir::exprOpText(node.op);
-  diags_.emit(DiagKind::ExprTypeMismatch, node.loc, what, operands);
+  diags_.emit<DiagKind::ExprTypeMismatch>(node.loc, what, operands);
   return ir::Type::any();
 }
 

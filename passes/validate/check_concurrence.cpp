@@ -67,22 +67,23 @@ class ConcurrenceChecker {
  private:
   void checkDefaultOutcome() {
     if (!c_.default_outcome) {
-      diags_.emit(DiagKind::MissingKey, c_.name.loc, "concurrence `" + c_.name.text + "`",
-                  "default_outcome");
+      diags_.emit<DiagKind::MissingKey>(c_.name.loc, "concurrence `" + c_.name.text + "`",
+                                        "default_outcome");
       return;
     }
     const ir::Name& outcome = *c_.default_outcome;
     if (outcomes_.contains(outcome.text)) return;
-    diags_.emit(DiagKind::UnknownDefaultOutcome, outcome.loc, outcome.text, c_.name.text,
-                didYouMean(outcome.text, nameTexts(c_.outcomes)));
+    diags_.emit<DiagKind::UnknownDefaultOutcome>(outcome.loc, outcome.text, c_.name.text,
+                                                 didYouMean(outcome.text, nameTexts(c_.outcomes)));
   }
 
   /// Reports the entry's problems; returns whether it has none.
   bool checkEntry(const ir::OutcomeMapEntry& entry) {
     bool ok = true;
     if (!outcomes_.contains(entry.outcome.text)) {
-      diags_.emit(DiagKind::UnknownOutcomeMapOutcome, entry.outcome.loc, entry.outcome.text,
-                  c_.name.text, didYouMean(entry.outcome.text, nameTexts(c_.outcomes)));
+      diags_.emit<DiagKind::UnknownOutcomeMapOutcome>(
+          entry.outcome.loc, entry.outcome.text, c_.name.text,
+          didYouMean(entry.outcome.text, nameTexts(c_.outcomes)));
       ok = false;
     }
     for (const ir::OutcomeCondition& condition : entry.conditions) {
@@ -94,17 +95,18 @@ class ConcurrenceChecker {
   bool checkCondition(const ir::OutcomeCondition& condition) {
     auto it = children_.find(condition.child.text);
     if (it == children_.end()) {
-      diags_.emit(DiagKind::UnknownOutcomeMapChild, condition.child.loc, condition.child.text,
-                  c_.name.text, didYouMean(condition.child.text, childNames(module_, c_)));
+      diags_.emit<DiagKind::UnknownOutcomeMapChild>(
+          condition.child.loc, condition.child.text, c_.name.text,
+          didYouMean(condition.child.text, childNames(module_, c_)));
       return false;
     }
     const ir::State& child = module_.state(it->second);
     if (!declaresOutcomes(child) || contains(child.outcomes, condition.child_outcome.text)) {
       return true;
     }
-    diags_.emit(DiagKind::UndeclaredOutcome, condition.child_outcome.loc, child.name.text,
-                condition.child_outcome.text,
-                didYouMean(condition.child_outcome.text, nameTexts(child.outcomes)));
+    diags_.emit<DiagKind::UndeclaredOutcome>(
+        condition.child_outcome.loc, child.name.text, condition.child_outcome.text,
+        didYouMean(condition.child_outcome.text, nameTexts(child.outcomes)));
     return false;
   }
 
@@ -135,18 +137,20 @@ class ConcurrenceChecker {
   void reportNeverChosen(const std::vector<ValidEntry>& entries, size_t j) {
     const ir::Name& outcome = entries[j].entry->outcome;
     if (entries[j].conditions.empty()) {
-      diags_.emit(DiagKind::ShadowedOutcomeMapEntry, outcome.loc, outcome.text,
-                  "it has no conditions; older SMACH and the ROS 2 branch choose it when no "
-                  "entry after it holds");
+      diags_.emit<DiagKind::ShadowedOutcomeMapEntry>(
+          outcome.loc, outcome.text,
+          "it has no conditions; older SMACH and the ROS 2 branch choose it when no "
+          "entry after it holds");
       return;
     }
     for (size_t i = 0; i < j; ++i) {
       if (entries[i].conditions != entries[j].conditions) continue;
-      diags_.emit(DiagKind::ShadowedOutcomeMapEntry, outcome.loc, outcome.text,
-                  "`" + entries[i].entry->outcome.text +
-                      "` has the same conditions and comes first; older SMACH and the ROS 2 "
-                      "branch choose `" +
-                      outcome.text + "` instead (last in order)");
+      diags_.emit<DiagKind::ShadowedOutcomeMapEntry>(
+          outcome.loc, outcome.text,
+          "`" + entries[i].entry->outcome.text +
+              "` has the same conditions and comes first; older SMACH and the ROS 2 "
+              "branch choose `" +
+              outcome.text + "` instead (last in order)");
       return;
     }
   }
@@ -161,8 +165,8 @@ class ConcurrenceChecker {
     }
     const ir::Name& chosen = earlier.entry->outcome;
     const ir::Name& last = later.entry->outcome;
-    diags_.emit(
-        DiagKind::VersionDependentOutcomeMap, chosen.loc, chosen.text, last.text, chosen.text,
+    diags_.emit<DiagKind::VersionDependentOutcomeMap>(
+        chosen.loc, chosen.text, last.text, chosen.text,
         earlier_size > later_size ? "more conditions" : "as many conditions and first in order",
         last.text);
   }
@@ -191,8 +195,9 @@ class ConcurrenceChecker {
     used.insert("preempted");  // when it was preempted and every child serviced the request
     for (const ir::Name& outcome : c_.outcomes) {
       if (!used.insert(outcome.text).second) continue;
-      diags_.emit(DiagKind::UnusedContainerOutcome, outcome.loc, c_.name.text, outcome.text,
-                  "it is neither an `outcome_map` key nor the `default_outcome`");
+      diags_.emit<DiagKind::UnusedContainerOutcome>(
+          outcome.loc, c_.name.text, outcome.text,
+          "it is neither an `outcome_map` key nor the `default_outcome`");
     }
   }
 
@@ -203,9 +208,9 @@ class ConcurrenceChecker {
       for (const KeyUse& write : scope.writes(child)) {
         auto [it, inserted] = first.emplace(write.key, std::make_pair(child, &write));
         if (inserted || it->second.first == child) continue;
-        diags_.emit(DiagKind::ConcurrentWrite, write.scope_name->loc, childName(module_, c_, child),
-                    childName(module_, c_, it->second.first), scope.keyName(write.key),
-                    c_.name.text);
+        diags_.emit<DiagKind::ConcurrentWrite>(write.scope_name->loc, childName(module_, c_, child),
+                                               childName(module_, c_, it->second.first),
+                                               scope.keyName(write.key), c_.name.text);
         diags_.note(it->second.second->scope_name->loc,
                     "`" + childName(module_, c_, it->second.first) + "` writes it here");
       }
@@ -222,12 +227,12 @@ class ConcurrenceChecker {
 
 void checkIgnoredKeys(const ir::State& state, DiagnosticEmitter& diags) {
   if (!state.outcome_map.empty()) {
-    diags.emit(DiagKind::IgnoredConcurrenceKey, state.outcome_map.front().outcome.loc,
-               "outcome_map", state.name.text);
+    diags.emit<DiagKind::IgnoredConcurrenceKey>(state.outcome_map.front().outcome.loc,
+                                                "outcome_map", state.name.text);
   }
   if (state.default_outcome) {
-    diags.emit(DiagKind::IgnoredConcurrenceKey, state.default_outcome->loc, "default_outcome",
-               state.name.text);
+    diags.emit<DiagKind::IgnoredConcurrenceKey>(state.default_outcome->loc, "default_outcome",
+                                                state.name.text);
   }
 }
 

@@ -16,7 +16,7 @@ namespace {
 void reportOutside(const ir::Value& value, const std::string& what, const ir::State& state,
                    DiagnosticEmitter& diags) {
   if (value.asPortable()) {
-    diags.emit(DiagKind::ExprOutsideCallback, value.loc, what, state.name.text);
+    diags.emit<DiagKind::ExprOutsideCallback>(value.loc, what, state.name.text);
   } else if (value.isList()) {
     for (const ir::Value& item : value.asList()) reportOutside(item, what, state, diags);
   } else if (value.isMap()) {

@@ -54,13 +54,13 @@ class NameChecker {
       const ir::State& child = module_.state(id);
       auto [it, inserted] = seen.emplace(child.name.text, &child);
       if (!inserted) {
-        diags_.emit(DiagKind::DuplicateStateName, child.name.loc, container.name.text,
-                    child.name.text);
+        diags_.emit<DiagKind::DuplicateStateName>(child.name.loc, container.name.text,
+                                                  child.name.text);
         diags_.note(it->second->name.loc, "the first state named so is here");
       }
       if (outcomes.contains(child.name.text)) {
-        diags_.emit(DiagKind::StateNamedLikeOutcome, child.name.loc, child.name.text,
-                    container.name.text, child.name.text);
+        diags_.emit<DiagKind::StateNamedLikeOutcome>(child.name.loc, child.name.text,
+                                                     container.name.text, child.name.text);
       }
     }
   }
@@ -79,7 +79,7 @@ class NameChecker {
         repeated = !seen.insert(name.text).second;
       }
       if (repeated) {
-        diags_.emit(DiagKind::DuplicateListEntry, name.loc, name.text, field, state.name.text);
+        diags_.emit<DiagKind::DuplicateListEntry>(name.loc, name.text, field, state.name.text);
       }
     }
   }
@@ -113,8 +113,8 @@ class NameChecker {
   bool checkKey(const ir::Name& key) {
     std::optional<std::string> problem = identifierProblem(key.text, rules_);
     if (problem) {
-      diags_.emit(DiagKind::InvalidIdentifier, key.loc, "userdata key", key.text, rulesName(rules_),
-                  "it " + *problem);
+      diags_.emit<DiagKind::InvalidIdentifier>(key.loc, "userdata key", key.text, rulesName(rules_),
+                                               "it " + *problem);
     }
     return !problem;
   }
@@ -132,7 +132,7 @@ class NameChecker {
     std::string reason = variable == text
                              ? "it " + *problem
                              : fmt::format("it becomes `{}`, which {}", variable, *problem);
-    diags_.emit(DiagKind::InvalidIdentifier, loc, what, text, rulesName(rules_), reason);
+    diags_.emit<DiagKind::InvalidIdentifier>(loc, what, text, rulesName(rules_), reason);
   }
 
   /// The base template's `function_name`: the name of the generated main function.
@@ -156,8 +156,8 @@ class NameChecker {
       if (std::optional<std::string> problem = identifierProblem(part, rules_)) {
         std::string reason =
             part == text ? "it " + *problem : fmt::format("its part `{}` {}", part, *problem);
-        diags_.emit(DiagKind::InvalidIdentifier, value.loc, "callback function name", text,
-                    rulesName(rules_), reason);
+        diags_.emit<DiagKind::InvalidIdentifier>(value.loc, "callback function name", text,
+                                                 rulesName(rules_), reason);
         return;
       }
       if (separator == std::string_view::npos) return;
@@ -167,7 +167,7 @@ class NameChecker {
 
   void checkTemplateArgument(const ir::State& state, const ir::Name& key) {
     if (isAsciiIdentifier(key.text)) return;
-    diags_.emit(DiagKind::TemplateArgumentNotIdentifier, key.loc, key.text, state.name.text);
+    diags_.emit<DiagKind::TemplateArgumentNotIdentifier>(key.loc, key.text, state.name.text);
   }
 
   const ir::Module& module_;

@@ -33,7 +33,7 @@ void reportUnreachable(const ir::Module& module, const ir::State& container,
   for (uint32_t node = 0; node < graph.size(); ++node) {
     const ir::Name& name = nodeName(module, graph, node);
     if (!names.insert(name.text).second || reachable[node]) continue;
-    diags.emit(DiagKind::UnreachableState, name.loc, name.text, initial, container.name.text);
+    diags.emit<DiagKind::UnreachableState>(name.loc, name.text, initial, container.name.text);
   }
 }
 
@@ -50,7 +50,7 @@ bool checkCanFinish(const ir::Module& module, const ir::State& container,
   } else {
     return true;
   }
-  diags.emit(DiagKind::ContainerNeverFinishes, container.name.loc, container.name.text, reason);
+  diags.emit<DiagKind::ContainerNeverFinishes>(container.name.loc, container.name.text, reason);
   return false;
 }
 
@@ -65,7 +65,7 @@ void checkSequential(const ir::Module& module, ir::StateId id, const ChildIndex&
   for (uint32_t node = 0; node < graph.size(); ++node) {
     if (!reachable[node] || exits_reachable[node]) continue;
     const ir::Name& name = nodeName(module, graph, node);
-    diags.emit(DiagKind::NoPathToOutcome, name.loc, name.text, container.name.text);
+    diags.emit<DiagKind::NoPathToOutcome>(name.loc, name.text, container.name.text);
   }
 }
 
@@ -77,7 +77,7 @@ void checkReachability(const ir::Module& module, PassContext& context) {
     const ir::State& state = module.state(id);
     if (!ir::isContainer(state.kind)) continue;
     if (state.children.empty()) {
-      context.diags.emit(DiagKind::EmptyContainer, state.name.loc, state.name.text);
+      context.diags.emit<DiagKind::EmptyContainer>(state.name.loc, state.name.text);
     } else if (isSequential(state.kind)) {
       checkSequential(module, id, index, context.diags);
     }

@@ -45,14 +45,15 @@ class TransitionChecker {
  private:
   void checkTransition(const ir::State& child, const ir::Transition& t) {
     if (t.target_kind == ir::TargetKind::Unresolved) {
-      diags_.emit(DiagKind::UnknownTransitionTarget, t.target.loc, t.target.text,
-                  container_.name.text, suggestion(t.target.text));
+      diags_.emit<DiagKind::UnknownTransitionTarget>(
+          t.target.loc, t.target.text, container_.name.text, suggestion(t.target.text));
     } else if (t.target_kind == ir::TargetKind::ContainerOutcome) {
       used_.insert(t.target.text);
     }
     if (declaresOutcomes(child) && !contains(child.outcomes, t.outcome.text)) {
-      diags_.emit(DiagKind::UndeclaredOutcome, t.outcome.loc, child.name.text, t.outcome.text,
-                  didYouMean(t.outcome.text, nameTexts(child.outcomes)));
+      diags_.emit<DiagKind::UndeclaredOutcome>(
+          t.outcome.loc, child.name.text, t.outcome.text,
+          didYouMean(t.outcome.text, nameTexts(child.outcomes)));
     }
   }
 
@@ -61,16 +62,17 @@ class TransitionChecker {
       used_.insert(outcome.text);
       return;
     }
-    diags_.emit(DiagKind::UnmappedOutcome, outcome.loc, outcome.text, child.name.text,
-                container_.name.text);
+    diags_.emit<DiagKind::UnmappedOutcome>(outcome.loc, outcome.text, child.name.text,
+                                           container_.name.text);
   }
 
   void reportUnusedOutcomes() {
     NameSet reported;
     for (const ir::Name& outcome : container_.outcomes) {
       if (used_.contains(outcome.text) || !reported.insert(outcome.text).second) continue;
-      diags_.emit(DiagKind::UnusedContainerOutcome, outcome.loc, container_.name.text, outcome.text,
-                  "no transition or outcome of its states leads to it");
+      diags_.emit<DiagKind::UnusedContainerOutcome>(
+          outcome.loc, container_.name.text, outcome.text,
+          "no transition or outcome of its states leads to it");
     }
   }
 
@@ -104,8 +106,8 @@ void checkConcurrenceChildren(const ir::Module& module, const ir::State& contain
   for (ir::StateId id : container.children) {
     const ir::State& child = module.state(id);
     if (child.transitions.empty()) continue;
-    diags.emit(DiagKind::IgnoredTransitions, child.transitions.front().outcome.loc, child.name.text,
-               container.name.text);
+    diags.emit<DiagKind::IgnoredTransitions>(child.transitions.front().outcome.loc, child.name.text,
+                                             container.name.text);
   }
 }
 

@@ -75,9 +75,9 @@ class FlowChecker {
 
   void reportUndefined(uint32_t child, const KeyUse& read) {
     if (names_.empty()) names_ = scope_.keyNames();
-    diags_.emit(DiagKind::UndefinedUserdataKey, read.scope_name->loc, read.scope_name->text,
-                reader(child, read), container_.name.text,
-                didYouMean(read.scope_name->text, names_));
+    diags_.emit<DiagKind::UndefinedUserdataKey>(read.scope_name->loc, read.scope_name->text,
+                                                reader(child, read), container_.name.text,
+                                                didYouMean(read.scope_name->text, names_));
     if (child != kExit) noteParentHasKey(read);
   }
 
@@ -117,8 +117,8 @@ class FlowChecker {
   }
 
   void reportMaybe(uint32_t child, const KeyUse& read) {
-    diags_.emit(DiagKind::MaybeUndefinedUserdataKey, read.scope_name->loc, read.scope_name->text,
-                reader(child, read), container_.name.text);
+    diags_.emit<DiagKind::MaybeUndefinedUserdataKey>(read.scope_name->loc, read.scope_name->text,
+                                                     reader(child, read), container_.name.text);
     if (parent_keys_ && parent_keys_->contains(read.scope_name->text)) {
       noteParentHasKey(read);
     } else if (auto writer = scope_.firstWriter(read.key)) {

@@ -96,8 +96,8 @@ class TypeChecker {
 
   void report(std::string_view key, const TypedKey& inner, const TypedKey& outer) {
     std::string as = outer.name == key ? "" : fmt::format(" (as `{}`)", outer.name);
-    diags_.emit(DiagKind::UserdataTypeMismatch, inner.loc, key, inner.type.str(), outer.type.str(),
-                outer.scope, as);
+    diags_.emit<DiagKind::UserdataTypeMismatch>(inner.loc, key, inner.type.str(), outer.type.str(),
+                                                outer.scope, as);
     diags_.note(outer.loc, fmt::format("`{}` is set here", outer.name));
   }
 

@@ -37,8 +37,8 @@ class UsageChecker {
       const LiteralDef* previous = last[def.key];
       last[def.key] = &def;
       if (!previous || ir::sameValue(previous->arg->value, def.arg->value)) continue;
-      diags_.emit(DiagKind::OverwrittenUserdata, previous->arg->key.loc, def.arg->key.text,
-                  definer(def.child), container_.name.text);
+      diags_.emit<DiagKind::OverwrittenUserdata>(previous->arg->key.loc, def.arg->key.text,
+                                                 definer(def.child), container_.name.text);
       diags_.note(def.arg->key.loc, "it is set again here");
     }
   }
@@ -79,7 +79,7 @@ class UsageChecker {
   void reportOnce(uint32_t key, const ir::Name& where, std::vector<uint8_t>& read) {
     if (read[key]) return;
     read[key] = 1;
-    diags_.emit(DiagKind::UnusedUserdataKey, where.loc, where.text, container_.name.text);
+    diags_.emit<DiagKind::UnusedUserdataKey>(where.loc, where.text, container_.name.text);
   }
 
   const std::string& definer(uint32_t child) const {

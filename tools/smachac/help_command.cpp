@@ -215,8 +215,9 @@ int runHelp(const Args& args) {
   DiagnosticEmitter diags;
   std::optional<std::string> name = env.resolveScriptTemplate(o.template_name);
   if (!name) {
-    diags.emit(DiagKind::UnknownTemplate, SourceLoc{}, o.template_name,
-               generator::describePath(path), generator::suggestTemplate(o.template_name, path));
+    diags.emit<DiagKind::UnknownTemplate>(SourceLoc{}, o.template_name,
+                                          generator::describePath(path),
+                                          generator::suggestTemplate(o.template_name, path));
     return fail(diags, sources);
   }
   try {
@@ -229,7 +230,7 @@ int runHelp(const Args& args) {
     MetaPrinter(std::cout, o.colours()).print(parsed);
   } catch (const tmpl::TemplateError& e) {
     generator::TemplateFiles files(sources, path.builtins);
-    diags.emit(DiagKind::TemplateError, files.locate(e), e.message());
+    diags.emit<DiagKind::TemplateError>(files.locate(e), e.message());
     return fail(diags, sources);
   }
   return kExitOk;

@@ -23,8 +23,9 @@ std::optional<std::string> readStandardInput(DiagnosticEmitter& diags) {
   std::istreambuf_iterator<char> in(std::cin), end;
   while (in != end && text.size() <= frontend::kMaxScriptBytes) text += *in++;
   if (text.size() <= frontend::kMaxScriptBytes) return text;
-  diags.emit(DiagKind::FileTooLarge, SourceLoc{}, kStandardInputName,
-             fmt::format("more than {}", frontend::kMaxScriptBytes), frontend::kMaxScriptBytes);
+  diags.emit<DiagKind::FileTooLarge>(SourceLoc{}, kStandardInputName,
+                                     fmt::format("more than {}", frontend::kMaxScriptBytes),
+                                     frontend::kMaxScriptBytes);
   return std::nullopt;
 }
 

@@ -11,7 +11,7 @@ TEST_CASE("messages are formatted from the registry") {
   smachac::DiagnosticEmitter diags;
   smachac::SourceManager sources;
   uint32_t f = sources.addFile("s.yml", "name: x\n  key: value\n");
-  diags.emit(DiagKind::DuplicateKey, {f, 2, 3, 3}, "key");
+  diags.emit<DiagKind::DuplicateKey>({f, 2, 3, 3}, "key");
   diags.note({f, 1, 1, 4}, "first defined here");
   REQUIRE(diags.diagnostics().size() == 1);
   CHECK(diags.hasErrors());
@@ -28,7 +28,7 @@ TEST_CASE("carets follow tabs and multi-byte characters") {
   smachac::DiagnosticEmitter diags;
   smachac::SourceManager sources;
   uint32_t f = sources.addFile("s.yml", "\tcafé: OPNE\n");
-  diags.emit(DiagKind::YamlSyntax, {f, 1, 9, 4}, "something");
+  diags.emit<DiagKind::YamlSyntax>({f, 1, 9, 4}, "something");
   CHECK(smachac::formatDiagnosticText(diags.diagnostics()[0], sources) ==
         "s.yml:1:9: error: something [yaml-syntax]\n\tcafé: OPNE\n\t      ^~~~\n");
 }
@@ -80,7 +80,7 @@ TEST_CASE("silenced diagnostics drop their notes") {
   smachac::WarningOptions options;
   CHECK_FALSE(options.apply("-Wno-unknown-root-key").has_value());
   smachac::DiagnosticEmitter diags(options);
-  diags.emit(DiagKind::UnknownRootKey, {}, "x", "");
+  diags.emit<DiagKind::UnknownRootKey>({}, "x", "");
   diags.note({}, "ignored");
   CHECK(diags.diagnostics().empty());
   CHECK(diags.warningCount() == 0);

@@ -20,14 +20,14 @@ bool checkName(const ScriptView& script, const ContainRequest& request, Selectio
   for (size_t i = 0; i < script.states().size(); ++i) {
     const RootState& state = script.states()[i];
     if (selection.contains(i) || state.name() != request.name) continue;
-    diags.emit(DiagKind::ContainerNameTaken, state.entry->key_loc, request.name,
-               "a root state of the script");
+    diags.emit<DiagKind::ContainerNameTaken>(state.entry->key_loc, request.name,
+                                             "a root state of the script");
     return false;
   }
   const ir::Module& module = script.module();
   for (const ir::Name& outcome : module.state(module.root()).outcomes) {
     if (outcome.text != request.name) continue;
-    diags.emit(DiagKind::ContainerNameTaken, outcome.loc, request.name, "an outcome of the script");
+    diags.emit<DiagKind::ContainerNameTaken>(outcome.loc, request.name, "an outcome of the script");
     return false;
   }
   return true;

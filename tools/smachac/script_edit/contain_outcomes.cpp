@@ -172,8 +172,8 @@ class OutcomePlanner {
     const ir::Module& module = scope_.script.module();
     for (const ir::Name& o : module.state(module.root()).outcomes) candidates.push_back(o.text);
     if (std::find(candidates.begin(), candidates.end(), target) != candidates.end()) return target;
-    scope_.diags.emit(DiagKind::UnknownDefaultTarget, SourceLoc{}, target,
-                      didYouMean(target, candidates));
+    scope_.diags.emit<DiagKind::UnknownDefaultTarget>(SourceLoc{}, target,
+                                                      didYouMean(target, candidates));
     return std::nullopt;
   }
 
@@ -183,8 +183,8 @@ class OutcomePlanner {
     std::string name = fresh(stem_ + "_default_outcome");
     if (!target) {
       if (!has_outcomes && !scope_.request.default_target) {
-        scope_.diags.emit(DiagKind::NoDefaultTarget,
-                          scope_.root(scope_.selection.first).entry->key_loc, name);
+        scope_.diags.emit<DiagKind::NoDefaultTarget>(
+            scope_.root(scope_.selection.first).entry->key_loc, name);
       }
       return false;
     }
@@ -255,8 +255,8 @@ void redirectIntoContainer(const ContainScope& scope, TransitionEdits& transitio
       if (!scope.selectedIndex(t.target.text)) continue;
       transitions.set(i, t.outcome.text, scope.request.name);
       if (t.target.text != first) {
-        scope.diags.emit(DiagKind::ContainEntryChanged, t.target.loc, scope.root(i).name(),
-                         t.target.text, scope.request.name, first);
+        scope.diags.emit<DiagKind::ContainEntryChanged>(t.target.loc, scope.root(i).name(),
+                                                        t.target.text, scope.request.name, first);
       }
     }
   }

@@ -61,8 +61,8 @@ class ParamLifter {
     }
     if (ir::sameValue(*existing->value, param.value)) return true;
     if (std::optional<std::string> script = subScriptInheriting(body, param.key)) {
-      scope_.diags.emit(DiagKind::ParamNotLifted, param.key_loc, param.key,
-                        scope_.root(index).name(), param.key, *script);
+      scope_.diags.emit<DiagKind::ParamNotLifted>(param.key_loc, param.key,
+                                                  scope_.root(index).name(), param.key, *script);
       return false;
     }
     std::string key = freshKey(param.key, own);

@@ -94,8 +94,8 @@ class UserdataLifter {
     if (!existing.empty()) {
       root_key = freshKey(key);
       plan_.renamed.emplace(key, root_key);
-      scope_.diags.emit(DiagKind::LiftedUserdataRenamed, c.entry->key_loc, key,
-                        scope_.root(c.state).name(), root_key, key);
+      scope_.diags.emit<DiagKind::LiftedUserdataRenamed>(
+          c.entry->key_loc, key, scope_.root(c.state).name(), root_key, key);
     }
     plan_.added.push_back(root_key);
     additions_.emplace_back(root_key,

@@ -37,13 +37,13 @@ std::optional<size_t> findRootState(const ScriptView& script, std::string_view n
   const ir::Module& module = script.module();
   if (std::optional<ir::StateId> nested = findNested(module, name)) {
     const ir::State& state = module.state(*nested);
-    diags.emit(DiagKind::StateNotAtRoot, state.name.loc, name, module.state(state.parent).name.text,
-               tool);
+    diags.emit<DiagKind::StateNotAtRoot>(state.name.loc, name, module.state(state.parent).name.text,
+                                         tool);
     return std::nullopt;
   }
   std::vector<std::string> names = script.names();
-  diags.emit(DiagKind::UnknownRootState, script.statesEntry().key_loc, name,
-             didYouMean(name, names));
+  diags.emit<DiagKind::UnknownRootState>(script.statesEntry().key_loc, name,
+                                         didYouMean(name, names));
   noteRootStates(script, diags);
   return std::nullopt;
 }
@@ -72,7 +72,7 @@ std::optional<Selection> selectRun(const ScriptView& script, std::span<const std
     } else {
       found = fmt::format("`{}` is in another list of states", names[k]);
     }
-    diags.emit(DiagKind::SelectionNotConsecutive, states[indices[k]].entry->key_loc, found);
+    diags.emit<DiagKind::SelectionNotConsecutive>(states[indices[k]].entry->key_loc, found);
     noteRootStates(script, diags);
     return std::nullopt;
   }

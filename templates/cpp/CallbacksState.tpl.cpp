@@ -1,8 +1,9 @@
 {% block meta %}
 name: CallbacksState
 description: >
-  Runs its callbacks on the userdata (each writes its output key), then succeeds.
-  The state is rt::CallbacksState of the smachac runtime.
+  Runs its callbacks on the userdata, in the script's order, each writing the
+  output key it is listed under, then returns `succeeded`. The state is
+  rt::CallbacksState of the smachac runtime.
 language: C++
 framework: smachac runtime
 type: State
@@ -11,21 +12,24 @@ includes: []
 extends:
 - State
 variables:
-- - outcomes:
-      description: The outcomes of the state.
-      type: list of str
+- callbacks:
+    description: >
+      Callbacks by output key, run in the script's order, each computing the
+      value of its key from the userdata:
+      the name of a C++ function the program defines (in a custom template), a
+      backtick-wrapped C++ lambda taking rt::UserData&, or a portable `!expr`
+      expression.
+    type: dict of str
 - - input_keys:
-      description: The userdata keys the state reads.
+      description: The userdata keys the callbacks read.
       type: list of str
 - - output_keys:
-      description: The userdata keys the state writes.
+      description: The userdata keys the callbacks write (each callback's key is added).
       type: list of str
-- - callbacks:
-      description: Callbacks by output key (C++ lambdas taking rt::UserData&, or function names).
-      type: dict of str
 input_keys: []
 output_keys: []
-outcomes: []
+outcomes:
+- succeeded
 {% endblock meta %}
 {% extends "State.tpl.cpp" %}
 

@@ -1,7 +1,9 @@
 {% block meta %}
 name: ConditionalOutcomeState
 description: >
-  Runs its callbacks (one per outcome, keyed by the outcome), then ends with the first outcome whose key holds true, else `default`.
+  Runs its callbacks, one per outcome and keyed by it, then ends with the
+  first outcome, in the order listed, whose key is set and true, and with
+  `default` when none is; the choice is written to the `outcome` output key.
   The state is rt::ConditionalOutcomeState of the smachac runtime.
 language: C++
 framework: smachac runtime
@@ -11,24 +13,37 @@ includes: []
 extends:
 - State
 variables:
-- - outcomes:
+- outcomes:
+    description: >
+      The outcomes, checked in order. The state also ends with `default` when
+      no condition holds: list `default` (last) to give it a transition, as
+      lint checks transitions against the listed outcomes.
+    type: list of str
+- - callbacks:
       description: >
-        The outcomes, checked in order. The state also ends with `default` when
-        no callback holds: list `default` (last) to give it a transition, as
-        lint checks transitions against the listed outcomes.
-      type: list of str
+        One callback per outcome, keyed by the outcome and run in the script's
+        order, each computing from the userdata a truth value written to the
+        key named like the outcome; without one, an outcome holds when its key
+        is already set and true. A callback is
+        the name of a C++ function the program defines (in a custom template), a
+        backtick-wrapped C++ lambda taking rt::UserData&, or a portable `!expr`
+        expression.
+      type: dict of str
 - - input_keys:
-      description: The userdata keys the state reads.
+      description: The userdata keys the callbacks read.
       type: list of str
 - - output_keys:
-      description: The userdata keys the state writes.
+      description: Other userdata keys the state writes (`outcome` is added).
       type: list of str
-- - callbacks:
-      description: Callbacks by output key (C++ lambdas taking rt::UserData&, or function names).
-      type: dict of str
 input_keys: []
-output_keys: []
-outcomes: []
+output_keys:
+- outcome:
+    description: The chosen outcome.
+    type: str
+outcomes:
+- default:
+    description: The outcome when no condition holds.
+    type: str
 {% endblock meta %}
 {% extends "State.tpl.cpp" %}
 

@@ -14,13 +14,19 @@ extends:
 - State
 variables:
 - - input_keys:
-      description: The userdata keys the state reads (file, and what callbacks need).
+      description: The userdata keys the state reads (`file` is added).
       type: list of str
 - - output_keys:
-      description: The userdata keys the callbacks write.
+      description: The userdata keys the callbacks write (each callback's key is added).
       type: list of str
 - - callbacks:
-      description: Callbacks by output key (C++ lambdas taking rt::UserData&), e.g. to compute the file name.
+      description: >
+        Callbacks by output key, run in the script's order before the files
+        are deleted (e.g. to compute the file name), each computing the value
+        of its key from the userdata:
+        the name of a C++ function the program defines (in a custom template), a
+        backtick-wrapped C++ lambda taking rt::UserData&, or a portable `!expr`
+        expression.
       type: dict of str
 input_keys:
 - file:

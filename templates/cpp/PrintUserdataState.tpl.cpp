@@ -1,8 +1,9 @@
 {% block meta %}
 name: PrintUserdataState
 description: >
-  Prints `userdata.<key>: <value>` for each input key, then succeeds.
-  The state is rt::PrintUserdataState of the smachac runtime.
+  Prints `userdata.<key>: <value>` for each of its input keys, in the order
+  they are listed, then returns `succeeded`. The state is
+  rt::PrintUserdataState of the smachac runtime.
 language: C++
 framework: smachac runtime
 type: State
@@ -12,11 +13,12 @@ extends:
 - State
 variables:
 - - input_keys:
-      description: The userdata keys to print.
+      description: The userdata keys to print, in this order.
       type: list of str
 input_keys: []
 output_keys: []
-outcomes: []
+outcomes:
+- succeeded
 {% endblock meta %}
 {% extends "State.tpl.cpp" %}
 

@@ -14,11 +14,13 @@ extends:
 - State
 variables:
 - time:
-    description: The time to sleep, in seconds.
+    description: How long to sleep, in seconds.
     type: float
+    units: s
 input_keys: []
 output_keys: []
-outcomes: []
+outcomes:
+- succeeded
 {% endblock meta %}
 {% extends "State.tpl.cpp" %}
 

@@ -4,8 +4,8 @@ description: >
   Runs its callbacks on the userdata, in the script's order, each writing the
   output key it is listed under, then returns `succeeded`. FlexBE has no
   library equivalent: the template writes an EventState class into the
-  behavior's states module, and each callback (a backtick-wrapped Python
-  lambda of the userdata) becomes an entry of its `callbacks` argument.
+  behavior's states module, and each callback becomes an entry of its
+  `callbacks` argument.
 language: Python
 framework: FlexBE
 type: CallbacksState
@@ -15,14 +15,16 @@ extends: []
 variables:
 - callbacks:
     description: >
-      Callbacks by output key: backtick-wrapped lambda expressions of the
-      userdata, e.g. '`lambda ud: ud.counter + 1`'.
+      Callbacks by output key, run in the script's order, each computing the
+      value of its key from the userdata:
+      a backtick-wrapped Python lambda of the userdata or a portable `!expr`
+      expression (a function name is not a callback here).
     type: dict of str
 - - input_keys:
       description: The userdata keys the callbacks read.
       type: list of str
 - - output_keys:
-      description: The userdata keys the callbacks write.
+      description: The userdata keys the callbacks write (each callback's key is added).
       type: list of str
 input_keys: []
 output_keys: []

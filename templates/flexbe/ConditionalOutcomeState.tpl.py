@@ -1,13 +1,11 @@
 {% block meta %}
 name: ConditionalOutcomeState
 description: >
-  Runs its callbacks, one per outcome and keyed by it (backtick-wrapped Python
-  lambdas of the userdata returning a truth value), then ends with the first
-  outcome, in the order listed, whose key is set and true, and with `default`
-  when none is; the choice is written to the `outcome` key. List `default`
-  (last) among the outcomes to give it a transition. FlexBE has no library
-  equivalent: the template writes an EventState class into the behavior's
-  states module.
+  Runs its callbacks, one per outcome and keyed by it, then ends with the
+  first outcome, in the order listed, whose key is set and true, and with
+  `default` when none is; the choice is written to the `outcome` output key.
+  FlexBE has no library equivalent: the template writes an EventState class
+  into the behavior's states module.
 language: Python
 framework: FlexBE
 type: ConditionalOutcomeState
@@ -16,18 +14,25 @@ includes: []
 extends: []
 variables:
 - outcomes:
-    description: The outcomes, checked in order (`default` last, if listed).
+    description: >
+      The outcomes, checked in order. The state also ends with `default` when
+      no condition holds: list `default` (last) to give it a transition, as
+      lint checks transitions against the listed outcomes.
     type: list of str
 - - callbacks:
       description: >
-        One callback per outcome, keyed by the outcome; without one, an outcome
-        holds when its key is already set and true in the userdata.
+        One callback per outcome, keyed by the outcome and run in the script's
+        order, each computing from the userdata a truth value written to the
+        key named like the outcome; without one, an outcome holds when its key
+        is already set and true. A callback is
+        a backtick-wrapped Python lambda of the userdata or a portable `!expr`
+        expression (a function name is not a callback here).
       type: dict of str
 - - input_keys:
       description: The userdata keys the callbacks read.
       type: list of str
 - - output_keys:
-      description: Other userdata keys the state writes.
+      description: Other userdata keys the state writes (`outcome` is added).
       type: list of str
 input_keys: []
 output_keys:
@@ -36,7 +41,7 @@ output_keys:
     type: str
 outcomes:
 - default:
-    description: The outcome when no callback returns a true value.
+    description: The outcome when no condition holds.
     type: str
 {% endblock meta %}
 {% extends "State.tpl.py" %}
@@ -44,10 +49,15 @@ outcomes:
 {% set state_module = '' %}
 {% set state_class = '' %}
 
+{# As for the other targets: each callback's key is an output key, declared or not (the class
+   adds the outcomes' keys itself). #}
+{% set chosen_callbacks = callbacks if callbacks is defined else {} %}
+{% set written = (output_keys if output_keys is defined else []) | list %}
+{% for key in chosen_callbacks if key not in written and key not in outcomes %}{% do written.append(key) %}{% endfor %}
 {% set state_args = 'outcomes=' ~ render_list(outcomes)
-    ~ ', callbacks=' ~ render_callbacks(callbacks if callbacks is defined else {})
+    ~ ', callbacks=' ~ render_callbacks(chosen_callbacks)
     ~ ', input_keys=' ~ render_list(input_keys if input_keys is defined else [])
-    ~ ', output_keys=' ~ render_list(output_keys if output_keys is defined else []) %}
+    ~ ', output_keys=' ~ render_list(written) %}
 
 {% block class_defs %}
 {% if 'class_ConditionalOutcomeState' not in defined_headers %}

@@ -3,9 +3,8 @@ name: DeleteFileState
 description: >
   Deletes the files the `file` input key names (a path or a glob pattern);
   `aborted` when one cannot be deleted or none exists. Runs its callbacks
-  first (backtick-wrapped Python lambdas of the userdata, e.g. to compute the
-  file name). FlexBE has no library equivalent: the template writes an
-  EventState class into the behavior's states module.
+  first (e.g. to compute the file name). FlexBE has no library equivalent:
+  the template writes an EventState class into the behavior's states module.
 language: Python
 framework: FlexBE
 type: DeleteFileState
@@ -14,13 +13,18 @@ includes: []
 extends: []
 variables:
 - - input_keys:
-      description: The userdata keys the state reads (file, and what callbacks need).
+      description: The userdata keys the state reads (`file` is added).
       type: list of str
 - - output_keys:
-      description: The userdata keys the callbacks write.
+      description: The userdata keys the callbacks write (each callback's key is added).
       type: list of str
 - - callbacks:
-      description: Callbacks by output key, e.g. to compute the file name.
+      description: >
+        Callbacks by output key, run in the script's order before the files
+        are deleted (e.g. to compute the file name), each computing the value
+        of its key from the userdata:
+        a backtick-wrapped Python lambda of the userdata or a portable `!expr`
+        expression (a function name is not a callback here).
       type: dict of str
 input_keys:
 - file:

@@ -1,9 +1,10 @@
 {% block meta %}
 name: PrintUserdataState
 description: >
-  Logs each of its input keys with its value, then returns `succeeded`.
-  FlexBE's LogKeyState logs one key; this template writes an EventState class
-  for any number into the behavior's states module.
+  Logs `userdata.<key>: <value>` for each of its input keys, in the order they
+  are listed, then returns `succeeded`. FlexBE's LogKeyState logs one key;
+  this template writes an EventState class for any number into the behavior's
+  states module.
 language: Python
 framework: FlexBE
 type: PrintUserdataState
@@ -11,19 +12,20 @@ tags: [core]
 includes: []
 extends: []
 variables:
-- input_keys:
-    description: The keys to log.
-    type: list of str
+- - input_keys:
+      description: The userdata keys to print, in this order.
+      type: list of str
 input_keys: []
 output_keys: []
-outcomes: [succeeded]
+outcomes:
+- succeeded
 {% endblock meta %}
 {% extends "State.tpl.py" %}
 {% from "Utils.tpl.py" import render_list %}
 {% set state_module = '' %}
 {% set state_class = '' %}
 
-{% set state_args = 'keys=' ~ render_list(input_keys) %}
+{% set state_args = 'keys=' ~ render_list(input_keys if input_keys is defined else []) %}
 
 {% block class_defs %}
 {% if 'class_PrintUserdataState' not in defined_headers %}

@@ -1,7 +1,7 @@
 {% block meta %}
 name: RandomOutcomeState
 description: >
-  Runs its callbacks, then returns one of its outcomes chosen at random and
+  Runs its callbacks, then ends with one of its outcomes chosen at random and
   stores the choice in the `outcome` output key. FlexBE has no library
   equivalent: the template writes an EventState class into the behavior's
   states module.
@@ -12,26 +12,30 @@ tags: [core]
 includes: []
 extends: []
 variables:
-- outcomes:
-    description: The outcomes to choose from.
-    type: list of str
+- - outcomes:
+      description: The outcomes to choose from (default [succeeded]).
+      type: list of str
 - - callbacks:
       description: >
-        Callbacks by output key, run before the outcome is chosen: backtick-wrapped
-        lambda expressions of the userdata or `!expr` expressions.
+        Callbacks by output key, run in the script's order before the outcome
+        is chosen, each computing the value of its key from the userdata:
+        a backtick-wrapped Python lambda of the userdata or a portable `!expr`
+        expression (a function name is not a callback here).
       type: dict of str
 - - input_keys:
       description: The userdata keys the callbacks read.
       type: list of str
 - - output_keys:
-      description: The userdata keys the callbacks write.
+      description: Other userdata keys the state writes (`outcome` is added).
       type: list of str
 input_keys: []
 output_keys:
 - outcome:
     description: The chosen outcome.
     type: str
-outcomes: []
+outcomes:
+- succeeded:
+    description: The only outcome when the state gives no `outcomes`.
 {% endblock meta %}
 {% extends "State.tpl.py" %}
 {% from "Utils.tpl.py" import render_list, render_callbacks %}
@@ -43,7 +47,8 @@ outcomes: []
 {% set written = (output_keys if output_keys is defined else []) | list %}
 {% for key in chosen_callbacks if key not in written %}{% do written.append(key) %}{% endfor %}
 {% if 'outcome' not in written %}{% do written.append('outcome') %}{% endif %}
-{% set state_args = 'outcomes=' ~ render_list(outcomes)
+{# Without `outcomes`, the state's only outcome is `succeeded`, as on the other targets. #}
+{% set state_args = 'outcomes=' ~ render_list(outcomes if outcomes is defined else ['succeeded'])
     ~ ', callbacks=' ~ render_callbacks(chosen_callbacks)
     ~ ', input_keys=' ~ render_list(input_keys if input_keys is defined else [])
     ~ ', output_keys=' ~ render_list(written) %}

@@ -13,8 +13,9 @@ includes: []
 extends: []
 variables:
 - time:
-    description: The time to wait, in seconds.
+    description: How long to sleep, in seconds.
     type: float
+    units: s
 input_keys: []
 output_keys: []
 outcomes:

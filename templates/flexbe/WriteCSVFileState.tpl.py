@@ -14,23 +14,30 @@ includes: []
 extends: []
 variables:
 - input_keys:
-    description: The userdata keys the state reads (file, data_keys and the data).
+    description: >
+      The userdata keys the state reads: the keys `data_keys` names, and
+      `header` for a first row (`file` and `data_keys` are added).
     type: list of str
 - - output_keys:
-      description: The userdata keys the callbacks write.
+      description: The userdata keys the callbacks write (each callback's key is added).
       type: list of str
 - - callbacks:
-      description: Callbacks by output key, e.g. to prepare the data.
+      description: >
+        Callbacks by output key, run in the script's order before the file is
+        written (e.g. to prepare the data), each computing the value of its
+        key from the userdata:
+        a backtick-wrapped Python lambda of the userdata or a portable `!expr`
+        expression (a function name is not a callback here).
       type: dict of str
 - - delimiter:
-      description: The column separator (default `,`).
+      description: The column separator, one character (default `,`).
       type: str
 input_keys:
 - file:
     description: The path of the CSV file.
     type: str
 - data_keys:
-    description: The userdata keys to write, one row.
+    description: The userdata keys whose values form the row, in order.
     type: list of str
 output_keys: []
 outcomes:

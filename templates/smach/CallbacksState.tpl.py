@@ -1,8 +1,9 @@
 {% block meta %}
 name: CallbacksState
 description: >
-  A SMACH state that only runs its callbacks on the userdata, e.g. lambda
-  expressions that compute output keys from input keys, and then succeeds.
+  A SMACH state that runs its callbacks on the userdata, in the script's
+  order, each writing the output key it is listed under, then returns
+  `succeeded`.
 language: Python
 framework: SMACH
 type: State
@@ -13,14 +14,17 @@ extends:
 variables:
 - callbacks:
     description: >
-      Callbacks by output key: function names or backtick-wrapped lambda
-      expressions.
+      Callbacks by output key, run in the script's order, each computing the
+      value of its key from the userdata:
+      the name of a function the program defines (in a custom template), a
+      backtick-wrapped Python lambda of the userdata, or a portable `!expr`
+      expression.
     type: dict of str
 - - input_keys:
       description: The userdata keys the callbacks read.
       type: list of str
 - - output_keys:
-      description: The userdata keys the callbacks write.
+      description: The userdata keys the callbacks write (each callback's key is added).
       type: list of str
 input_keys: []
 output_keys: []

@@ -1,8 +1,10 @@
 {% block meta %}
 name: ConditionalOutcomeState
 description: >
-  A SMACH state that ends with the first of its outcomes whose callback (named
-  like the outcome) returns a true value, and with `default` when none does.
+  A SMACH state that runs its callbacks, one per outcome and keyed by it, then
+  ends with the first outcome, in the order listed, whose key is set and
+  true, and with `default` when none is; the choice is written to the
+  `outcome` output key.
 language: Python
 framework: SMACH
 type: State
@@ -14,16 +16,24 @@ variables:
 - outcomes:
     description: >
       The outcomes, checked in order. The state also ends with `default` when
-      no callback holds: list `default` (last) to give it a transition, as
+      no condition holds: list `default` (last) to give it a transition, as
       lint checks transitions against the listed outcomes.
     type: list of str
-- callbacks:
-    description: >
-      One callback per outcome, keyed by the outcome: a function name or a
-      backtick-wrapped lambda expression returning a truth value.
-    type: dict of str
+- - callbacks:
+      description: >
+        One callback per outcome, keyed by the outcome and run in the script's
+        order, each computing from the userdata a truth value written to the
+        key named like the outcome; without one, an outcome holds when its key
+        is already set and true. A callback is
+        the name of a function the program defines (in a custom template), a
+        backtick-wrapped Python lambda of the userdata, or a portable `!expr`
+        expression.
+      type: dict of str
 - - input_keys:
       description: The userdata keys the callbacks read.
+      type: list of str
+- - output_keys:
+      description: Other userdata keys the state writes (`outcome` is added).
       type: list of str
 input_keys: []
 output_keys:
@@ -32,7 +42,7 @@ output_keys:
     type: str
 outcomes:
 - default:
-    description: The outcome when no callback returns a true value.
+    description: The outcome when no condition holds.
     type: str
 {% endblock meta %}
 {% from "Utils.tpl.py" import render_init_callbacks, render_execute_callbacks %}

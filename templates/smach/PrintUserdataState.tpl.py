@@ -1,6 +1,8 @@
 {% block meta %}
 name: PrintUserdataState
-description: A SMACH state that logs the value of each of its input keys, then succeeds.
+description: >
+  A SMACH state that logs `userdata.<key>: <value>` for each of its input
+  keys, in the order they are listed, then returns `succeeded`.
 language: Python
 framework: SMACH
 type: State
@@ -10,7 +12,7 @@ extends:
 - State
 variables:
 - - input_keys:
-      description: The userdata keys to print.
+      description: The userdata keys to print, in this order.
       type: list of str
 input_keys: []
 output_keys: []
@@ -23,14 +25,15 @@ outcomes:
 {{ super() }}
 {% if 'class_PrintUserdataState' not in defined_headers %}
 class PrintUserdataState(smach.State):
-    """Logs every input key with its value, then succeeds."""
+    """Logs every input key with its value, in the order given, then succeeds."""
 
     def __init__(self, input_keys=[], output_keys=[], callbacks=[], outcomes=['succeeded']):
         smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
                              outcomes=outcomes)
+        self._keys = list(dict.fromkeys(input_keys))  # in order (SMACH keeps a set)
 
     def execute(self, userdata):
-        for key in sorted(self.get_registered_input_keys()):
+        for key in self._keys:
             smach.loginfo('userdata.{}: {}'.format(key, userdata[key]))
         return 'succeeded'
 {% do defined_headers.append('class_PrintUserdataState') %}

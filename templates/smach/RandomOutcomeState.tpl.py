@@ -1,10 +1,10 @@
 {% block meta %}
 name: RandomOutcomeState
 description: >
-  A SMACH state that ends with one of its outcomes chosen at random, and
-  stores the choice in the `outcome` output key. Without callbacks it gets a
-  default one (it also draws an outcome into `outcome`); like every template
-  global, that default stays set for the states after it.
+  A SMACH state that runs its callbacks, then ends with one of its outcomes
+  chosen at random and stores the choice in the `outcome` output key. Without
+  callbacks it gets a default one (it also draws an outcome into `outcome`);
+  like every template global, that default stays set for the states after it.
 language: Python
 framework: SMACH
 type: State
@@ -14,14 +14,21 @@ extends:
 - State
 variables:
 - - outcomes:
-      description: The outcomes to choose from (default succeeded).
+      description: The outcomes to choose from (default [succeeded]).
       type: list of str
 - - callbacks:
       description: >
-        Callbacks by output key, run before the outcome is chosen.
+        Callbacks by output key, run in the script's order before the outcome
+        is chosen, each computing the value of its key from the userdata:
+        the name of a function the program defines (in a custom template), a
+        backtick-wrapped Python lambda of the userdata, or a portable `!expr`
+        expression.
       type: dict of str
 - - input_keys:
       description: The userdata keys the callbacks read.
+      type: list of str
+- - output_keys:
+      description: Other userdata keys the state writes (`outcome` is added).
       type: list of str
 input_keys: []
 output_keys:
@@ -29,7 +36,8 @@ output_keys:
     description: The chosen outcome.
     type: str
 outcomes:
-- User-specified (default succeeded)
+- succeeded:
+    description: The only outcome when the state gives no `outcomes`.
 {% endblock meta %}
 {% from "Utils.tpl.py" import import_module, render_init_callbacks, render_execute_callbacks %}
 {% extends "State.tpl.py" %}

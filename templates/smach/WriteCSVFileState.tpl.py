@@ -1,10 +1,10 @@
 {% block meta %}
 name: WriteCSVFileState
 description: >
-  A SMACH state that writes userdata to a CSV file: the `file` input key names
-  the file, `data_keys` lists the userdata keys whose values form the columns
-  (a list value spreads over several columns). An optional `header` input key
-  gives the first row.
+  A SMACH state that writes the values of the `data_keys` userdata keys as
+  one row of the CSV `file` (a list value spreads over several columns),
+  after the `header` row when the state reads a `header` key; `aborted` when
+  the file cannot be written. Runs its callbacks first.
 language: Python
 framework: SMACH
 type: State
@@ -14,23 +14,31 @@ extends:
 - State
 variables:
 - input_keys:
-    description: The userdata keys the state reads (file, data_keys and the data).
+    description: >
+      The userdata keys the state reads: the keys `data_keys` names, and
+      `header` for a first row (`file` and `data_keys` are added).
     type: list of str
 - - output_keys:
-      description: The userdata keys the callbacks write.
+      description: The userdata keys the callbacks write (each callback's key is added).
       type: list of str
 - - callbacks:
-      description: Callbacks by output key, e.g. to prepare the data.
+      description: >
+        Callbacks by output key, run in the script's order before the file is
+        written (e.g. to prepare the data), each computing the value of its
+        key from the userdata:
+        the name of a function the program defines (in a custom template), a
+        backtick-wrapped Python lambda of the userdata, or a portable `!expr`
+        expression.
       type: dict of str
 - - delimiter:
-      description: The column separator (default `,`).
+      description: The column separator, one character (default `,`).
       type: str
 input_keys:
 - file:
     description: The path of the CSV file.
     type: str
 - data_keys:
-    description: The userdata keys to write, one row.
+    description: The userdata keys whose values form the row, in order.
     type: list of str
 output_keys: []
 outcomes:
@@ -53,6 +61,10 @@ class WriteCSVFileState(smach.State):
 
     def __init__(self, delimiter=',', input_keys=['file', 'data_keys'], output_keys=[],
                  callbacks=[]):
+        # `file` and `data_keys` are read whatever input keys the script lists, as on the
+        # other targets.
+        input_keys = ['file', 'data_keys'] + [key for key in input_keys
+                                              if key not in ('file', 'data_keys')]
         smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
                              outcomes=['succeeded', 'aborted'])
         self._delimiter = delimiter
@@ -65,7 +77,7 @@ class WriteCSVFileState(smach.State):
             value = userdata[key]
             row.extend(value if isinstance(value, (list, tuple)) else [value])
         try:
-            with open(userdata.file, 'w') as stream:
+            with open(userdata.file, 'w', newline='') as stream:
                 writer = csv.writer(stream, delimiter=self._delimiter)
                 if 'header' in userdata:
                     writer.writerow(userdata.header)

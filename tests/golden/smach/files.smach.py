@@ -12,6 +12,10 @@ class WriteCSVFileState(smach.State):
 
     def __init__(self, delimiter=',', input_keys=['file', 'data_keys'], output_keys=[],
                  callbacks=[]):
+        # `file` and `data_keys` are read whatever input keys the script lists, as on the
+        # other targets.
+        input_keys = ['file', 'data_keys'] + [key for key in input_keys
+                                              if key not in ('file', 'data_keys')]
         smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
                              outcomes=['succeeded', 'aborted'])
         self._delimiter = delimiter
@@ -47,7 +51,7 @@ class WriteCSVFileState(smach.State):
             value = userdata[key]
             row.extend(value if isinstance(value, (list, tuple)) else [value])
         try:
-            with open(userdata.file, 'w') as stream:
+            with open(userdata.file, 'w', newline='') as stream:
                 writer = csv.writer(stream, delimiter=self._delimiter)
                 if 'header' in userdata:
                     writer.writerow(userdata.header)
@@ -61,6 +65,8 @@ class DeleteFileState(smach.State):
     """Deletes the files matching the `file` input key (a path or a glob pattern)."""
 
     def __init__(self, input_keys=['file'], output_keys=[], callbacks=[], outcomes=None):
+        # `file` is read whatever input keys the script lists, as on the other targets.
+        input_keys = ['file'] + [key for key in input_keys if key != 'file']
         smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
                              outcomes=['succeeded', 'aborted'])
         

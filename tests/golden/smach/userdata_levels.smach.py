@@ -4,14 +4,15 @@ import smach
 
 
 class PrintUserdataState(smach.State):
-    """Logs every input key with its value, then succeeds."""
+    """Logs every input key with its value, in the order given, then succeeds."""
 
     def __init__(self, input_keys=[], output_keys=[], callbacks=[], outcomes=['succeeded']):
         smach.State.__init__(self, input_keys=input_keys, output_keys=output_keys,
                              outcomes=outcomes)
+        self._keys = list(dict.fromkeys(input_keys))  # in order (SMACH keeps a set)
 
     def execute(self, userdata):
-        for key in sorted(self.get_registered_input_keys()):
+        for key in self._keys:
             smach.loginfo('userdata.{}: {}'.format(key, userdata[key]))
         return 'succeeded'
 

@@ -7,7 +7,7 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DSMACHAC_WERROR=ON
 SMACHAC := $(BUILD)/tools/smachac/smachac
 
-.PHONY: all deps configure build test demo demo-ros bench fuzz test-sanitize clean
+.PHONY: all deps configure build test demo demo-ros bench bench-compare fuzz test-sanitize clean
 
 all: build
 
@@ -47,6 +47,13 @@ bench: deps
 	cmake -S . -B $(BUILD)-bench $(CMAKE_FLAGS) -DSMACHAC_BUILD_BENCH=ON -DSMACHAC_BUILD_TESTS=OFF
 	cmake --build $(BUILD)-bench -j $(JOBS)
 	@bash bench/run.sh $(BUILD)-bench
+
+# smachac beside SMACHA, the real SMACH and python3-jinja2 on the same inputs: one table of
+# figures and paired ratios (bench/compare/README.md). Builds only what it runs.
+bench-compare: deps
+	cmake -S . -B $(BUILD)-bench $(CMAKE_FLAGS) -DSMACHAC_BUILD_BENCH=ON -DSMACHAC_BUILD_TESTS=OFF
+	cmake --build $(BUILD)-bench -j $(JOBS) --target smachac smachac_runtime bench_tmpl
+	@/usr/bin/python3 bench/compare/run.py $(BUILD)-bench
 
 # Each libFuzzer harness for FUZZ_SECONDS with ASan + UBSan (clang); crashes land in
 # build-fuzz/artifacts/ and make the target fail.

@@ -16,7 +16,6 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import same_meta_check  # noqa: E402
-from same_meta_check import interface, variables  # noqa: E402,F401  (for other scripts)
 
 
 if __name__ == "__main__":

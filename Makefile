@@ -7,7 +7,7 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DSMACHAC_WERROR=ON
 SMACHAC := $(BUILD)/tools/smachac/smachac
 
-.PHONY: all deps configure build test demo demo-ros bench bench-compare fuzz test-sanitize clean
+.PHONY: all deps configure build test lint demo demo-ros bench bench-compare fuzz test-sanitize clean
 
 all: build
 
@@ -25,6 +25,11 @@ build: configure
 # ctest, then why each skipped test (or left-out case) did not run (tools/run-tests.sh).
 test: build
 	@bash tools/run-tests.sh $(BUILD) $(JOBS)
+
+# The house style, checked: every C++ file formatted as .clang-format says, and the lint
+# tests (the component graph, typed diagnostics). .ci/run runs it after the tests.
+lint: build
+	@bash tools/lint.sh $(BUILD)
 
 # Builds only what the demo runs (the compiler and the dual-arm program with the runtime and
 # the simulation it links), not the tests.

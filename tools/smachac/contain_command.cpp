@@ -1,6 +1,6 @@
 // `smachac contain SCRIPT NAME StateMachine|Concurrence STATE... [-o out.yml] [-S dir]
 // [--default-target T]`: replaces consecutive root states by a new container
-// (tools/smachac/script_edit/contain.h has the rules). The output defaults to SMACHA's
+// (refactor/contain.h has the rules). The output defaults to SMACHA's
 // `smacha_contain_output.yml`; `-o -` writes to standard output. The result must load
 // again: a contained script that does not is a bug in smachac.
 #include <fmt/core.h>
@@ -11,7 +11,7 @@
 #include "frontend/lower.h"
 #include "ir/support/check.h"
 #include "tools/smachac/output.h"
-#include "tools/smachac/script_edit/contain.h"
+#include "refactor/contain.h"
 #include "tools/smachac/script_tool.h"
 
 namespace smachac::driver {
@@ -54,8 +54,8 @@ std::optional<std::string> checkRequest(const ContainOptions& o) {
   return std::nullopt;
 }
 
-script_edit::ContainRequest request(const ContainOptions& o) {
-  script_edit::ContainRequest r{o.name, ir::StateKind::StateMachine, o.states, {}};
+refactor::ContainRequest request(const ContainOptions& o) {
+  refactor::ContainRequest r{o.name, ir::StateKind::StateMachine, o.states, {}};
   if (o.type == "Concurrence") r.kind = ir::StateKind::Concurrence;
   if (!o.default_target.empty()) r.default_target = o.default_target;
   return r;
@@ -77,9 +77,9 @@ int runContain(const Args& args) {
   ContainOptions o;
   setUp(tool.app(), o);
   if (std::optional<int> code = tool.start(args, [&] { return checkRequest(o); })) return *code;
-  std::optional<script_edit::ScriptView> script = tool.load(o.script);
+  std::optional<refactor::ScriptView> script = tool.load(o.script);
   std::optional<std::string> text;
-  if (script) text = script_edit::contain(*script, request(o), tool.session().diags());
+  if (script) text = refactor::contain(*script, request(o), tool.session().diags());
   if (std::optional<int> code = tool.report(text.has_value())) return *code;
   checkReloads(o.script, *text, tool.scriptDirs());
   if (std::optional<std::string> error = writeFileAtomically(o.output, *text)) {

@@ -1,5 +1,5 @@
 // `smachac extract SCRIPT STATE [-sub sub.yml] [-sup super.yml] [-S dir]`: splits a root
-// state into a sub-script and a super-script (tools/smachac/script_edit/extract.h has the
+// state into a sub-script and a super-script (refactor/extract.h has the
 // rules). Outputs default to SMACHA's `smacha_extract_sub_script_output.yml` and
 // `smacha_extract_super_script_output.yml`; the super-script names the sub-script by its
 // file name without extension (with `-sub -`, by the state's name in lowercase). `-` writes
@@ -15,7 +15,7 @@
 #include <sstream>
 
 #include "tools/smachac/output.h"
-#include "tools/smachac/script_edit/extract.h"
+#include "refactor/extract.h"
 #include "tools/smachac/script_tool.h"
 
 namespace smachac::driver {
@@ -73,7 +73,7 @@ std::optional<std::string> readExisting(const std::string& path) {
 }
 
 /// Writes both files, or neither: the first is restored when the second fails.
-std::optional<std::string> writeBoth(const ExtractOptions& o, const script_edit::ExtractResult& r) {
+std::optional<std::string> writeBoth(const ExtractOptions& o, const refactor::ExtractResult& r) {
   std::optional<std::string> previous = readExisting(o.sub);
   if (std::optional<std::string> error = writeFileAtomically(o.sub, r.sub_script)) return error;
   std::optional<std::string> error = writeFileAtomically(o.super, r.super_script);
@@ -97,10 +97,10 @@ int runExtract(const Args& args) {
   ExtractOptions o;
   setUp(tool.app(), o);
   if (std::optional<int> code = tool.start(args, [&] { return checkPaths(o); })) return *code;
-  std::optional<script_edit::ScriptView> script = tool.load(o.script);
-  std::optional<script_edit::ExtractResult> result;
+  std::optional<refactor::ScriptView> script = tool.load(o.script);
+  std::optional<refactor::ExtractResult> result;
   if (script) {
-    result = script_edit::extract(*script, o.state, subScriptName(o), tool.session().diags());
+    result = refactor::extract(*script, o.state, subScriptName(o), tool.session().diags());
   }
   if (std::optional<int> code = tool.report(result.has_value())) return *code;
   if (std::optional<std::string> error = writeBoth(o, *result)) {

@@ -29,8 +29,8 @@ std::optional<int> ScriptTool::start(const Args& raw_args,
   return std::nullopt;
 }
 
-std::optional<script_edit::ScriptView> ScriptTool::load(const std::string& path) {
-  return script_edit::ScriptView::load(path, {common_.script_dirs}, session_.sources(),
+std::optional<refactor::ScriptView> ScriptTool::load(const std::string& path) {
+  return refactor::ScriptView::load(path, {common_.script_dirs}, session_.sources(),
                                        session_.diags());
 }
 

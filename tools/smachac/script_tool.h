@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "tools/smachac/script_edit/script_view.h"
+#include "refactor/script_view.h"
 #include "tools/smachac/session.h"
 
 namespace smachac::driver {
@@ -26,7 +26,7 @@ class ScriptTool {
                            const std::function<std::optional<std::string>()>& check);
 
   /// Loads the script (diagnostics are kept for print()).
-  std::optional<script_edit::ScriptView> load(const std::string& path);
+  std::optional<refactor::ScriptView> load(const std::string& path);
 
   /// Prints the diagnostics; kExitInputError when there are errors or `ok` is false.
   std::optional<int> report(bool ok);

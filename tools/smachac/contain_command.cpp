@@ -10,8 +10,8 @@
 
 #include "frontend/lower.h"
 #include "ir/support/check.h"
-#include "tools/smachac/output.h"
 #include "refactor/contain.h"
+#include "tools/smachac/output.h"
 #include "tools/smachac/script_tool.h"
 
 namespace smachac::driver {

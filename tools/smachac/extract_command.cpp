@@ -14,8 +14,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "tools/smachac/output.h"
 #include "refactor/extract.h"
+#include "tools/smachac/output.h"
 #include "tools/smachac/script_tool.h"
 
 namespace smachac::driver {

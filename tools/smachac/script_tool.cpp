@@ -31,7 +31,7 @@ std::optional<int> ScriptTool::start(const Args& raw_args,
 
 std::optional<refactor::ScriptView> ScriptTool::load(const std::string& path) {
   return refactor::ScriptView::load(path, {common_.script_dirs}, session_.sources(),
-                                       session_.diags());
+                                    session_.diags());
 }
 
 std::optional<int> ScriptTool::report(bool ok) {

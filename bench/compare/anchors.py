@@ -1,0 +1,115 @@
+"""The anchors smachac is compared with, found on this machine, each with the reason when it is
+not usable (the rows that need it print "skipped: <reason>").
+
+  SMACHA      the original Python tool, from $SMACHAC_ROS_SOURCES/smacha, else
+              <checkout>/../shared/vendor/smacha. Its package is copied into a temporary
+              folder and that copy is patched to import `unittest` instead of `unittest2`
+              (Debian 12 has no unittest2); the vendor folder is never written.
+  SMACH       the real smach library (executive_smach/smach/src from the same vendor folder,
+              or an installed one): plain `smach` imports only the standard library.
+  Jinja2      python3-jinja2, for bench/tmpl_bench_jinja.py's workload.
+All Python runs on Debian's /usr/bin/python3 (the one that sees Debian's packages).
+"""
+import importlib.util
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+PYTHON = "/usr/bin/python3"
+CHECKOUT = Path(__file__).resolve().parent.parent.parent
+
+
+def vendor_root():
+    """The folder of upstream sources (holding smacha/ and executive_smach/)."""
+    sources = os.environ.get("SMACHAC_ROS_SOURCES")
+    return Path(sources) if sources else CHECKOUT.parent / "shared" / "vendor"
+
+
+def smacha_root():
+    """SMACHA's repository folder (holding smacha/ and smacha_ros/)."""
+    return vendor_root() / "smacha"
+
+
+def _python_has(module):
+    """Whether Debian's python3 imports module (asked of that interpreter, not this one)."""
+    if not os.path.exists(PYTHON):
+        return False
+    check = "import importlib.util, sys; sys.exit(importlib.util.find_spec(%r) is None)" % module
+    return subprocess.run([PYTHON, "-c", check]).returncode == 0
+
+
+class Smacha:
+    """A patched temporary copy of SMACHA's `smacha` package; use as a context manager.
+
+    argv(script, template_dirs, script_dirs, output) is the command line of its `generate`
+    script, run on Debian's python3 with the copy on PYTHONPATH (env())."""
+
+    def __init__(self, work_dir):
+        self.root = smacha_root()
+        self.copy = Path(work_dir) / "smacha_copy"
+        self.why_not = self._why_not()
+
+    def _why_not(self):
+        package = self.root / "smacha"
+        if not (package / "src" / "smacha" / "generator.py").exists():
+            return "SMACHA not found at %s (set $SMACHAC_ROS_SOURCES)" % package
+        for module, deb in (("jinja2", "python3-jinja2"), ("ruamel.yaml", "python3-ruamel.yaml")):
+            if not _python_has(module):
+                return "%s cannot import %s (apt-get install %s)" % (PYTHON, module, deb)
+        return None
+
+    def __enter__(self):
+        if self.why_not is None:
+            package = self.root / "smacha"
+            shutil.copytree(package / "src", self.copy / "src")
+            shutil.copytree(package / "scripts", self.copy / "scripts")
+            util = self.copy / "src" / "smacha" / "util.py"
+            text = util.read_text(encoding="utf-8")
+            util.write_text(text.replace("import unittest2 as unittest", "import unittest"),
+                            encoding="utf-8")
+        return self
+
+    def __exit__(self, *exc):
+        shutil.rmtree(self.copy, ignore_errors=True)
+
+    def env(self):
+        env = dict(os.environ, PYTHONPATH=str(self.copy / "src"), PYTHONDONTWRITEBYTECODE="1")
+        return env
+
+    def argv(self, script, output, template_dirs=(), script_dirs=()):
+        argv = [PYTHON, self.copy / "scripts" / "generate", script, "-o", output]
+        if template_dirs:
+            argv += ["-t"] + list(template_dirs)
+        if script_dirs:
+            argv += ["-s"] + list(script_dirs)
+        return argv
+
+    def ros_templates(self):
+        """SMACHA's ROS templates (smacha_ros), which its ROS test scripts need."""
+        return self.root / "smacha_ros" / "src" / "smacha_ros" / "templates"
+
+
+class Smach:
+    """The real SMACH library for running generated SMACH Python: env() puts it on
+    PYTHONPATH (unless Debian's python3 imports an installed smach)."""
+
+    def __init__(self):
+        self.src = vendor_root() / "executive_smach" / "smach" / "src"
+        self.installed = _python_has("smach")
+        self.why_not = None
+        if not self.installed and not (self.src / "smach" / "__init__.py").exists():
+            self.why_not = "SMACH not installed and not found at %s" % self.src
+
+    def env(self):
+        env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")
+        if not self.installed:
+            env["PYTHONPATH"] = str(self.src)
+        return env
+
+
+def jinja_why_not():
+    """None when this interpreter imports jinja2 (the template row runs it in-process)."""
+    if importlib.util.find_spec("jinja2") is None:
+        return "python3-jinja2 is not installed"
+    return None

@@ -102,11 +102,14 @@ class SignalPreempter {
     sigemptyset(&signals_);
     sigaddset(&signals_, SIGINT);
     sigaddset(&signals_, SIGTERM);
+    sigaddset(&signals_, wakeSignal());
     pthread_sigmask(SIG_BLOCK, &signals_, &old_mask_);
     thread_ = std::thread([this] { watch(); });
   }
   ~SignalPreempter() {
+    // Woken at once: a program ends when its machine does, not at the watcher's next timeout.
     stop_.store(true);
+    pthread_kill(thread_.native_handle(), wakeSignal());
     thread_.join();
     pthread_sigmask(SIG_SETMASK, &old_mask_, nullptr);
   }
@@ -114,12 +117,15 @@ class SignalPreempter {
   SignalPreempter& operator=(const SignalPreempter&) = delete;
 
  private:
+  /// Sent by the destructor to the watcher thread only.
+  static int wakeSignal() { return SIGRTMIN; }
+
   void watch() {
     int received = 0;
     while (!stop_.load()) {
-      timespec timeout{.tv_sec = 0, .tv_nsec = 50'000'000};
+      timespec timeout{.tv_sec = 1, .tv_nsec = 0};
       int signal = sigtimedwait(&signals_, nullptr, &timeout);
-      if (signal <= 0) continue;
+      if (signal <= 0 || signal == wakeSignal()) continue;
       if (++received > 1) std::_Exit(128 + signal);
       std::cerr << "interrupted: preempting the machine (again to quit)\n";
       root_.requestPreempt();

@@ -13,6 +13,7 @@ enum class ExprNameKind : uint8_t { InputKey, Param, Unknown };
 
 struct ExprName {
   ExprNameKind kind = ExprNameKind::Unknown;
+  const Name* key = nullptr;     ///< the input key, for ExprNameKind::InputKey
   const Value* param = nullptr;  ///< the param's value, for ExprNameKind::Param
 };
 

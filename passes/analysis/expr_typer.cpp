@@ -89,11 +89,8 @@ ir::Type ExprTyper::name(const ir::ExprNode& node) {
       return ir::Type::ofValue(*bound.param);
     case ir::ExprNameKind::InputKey: {
       if (!state_->parent.valid()) return ir::Type::any();
-      const ir::Name* key = nullptr;
-      for (const ir::Name& k : state_->input_keys) {
-        if (k.text == node.name) key = &k;
-      }
-      std::optional<ir::Type> t = key_types_.find(state_->parent, remappedName(*state_, *key).text);
+      std::optional<ir::Type> t =
+          key_types_.find(state_->parent, remappedName(*state_, *bound.key).text);
       return t.value_or(ir::Type::any());
     }
     case ir::ExprNameKind::Unknown:

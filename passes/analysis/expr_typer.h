@@ -28,8 +28,7 @@ namespace smachac::passes {
 
 class ExprTyper {
  public:
-  ExprTyper(const ir::Module& module, KeyTypes& key_types, DiagnosticEmitter& diags)
-      : module_(module), key_types_(key_types), diags_(diags) {}
+  ExprTyper(KeyTypes& key_types, DiagnosticEmitter& diags) : key_types_(key_types), diags_(diags) {}
 
   /// The type of `expr` run as a callback of `state`; reports every problem found.
   ir::Type check(const ir::PortableExpr& expr, const ir::State& state);
@@ -46,7 +45,6 @@ class ExprTyper {
   void checkDivisor(const ir::ExprNode& division);
   ir::Type mismatch(const ir::ExprNode& node, const std::string& operands);
 
-  const ir::Module& module_;
   KeyTypes& key_types_;
   DiagnosticEmitter& diags_;
   const ir::State* state_ = nullptr;

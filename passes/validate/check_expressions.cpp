@@ -47,7 +47,7 @@ void checkState(const ir::State& state, ExprTyper& typer, DiagnosticEmitter& dia
 
 void checkExpressions(const ir::Module& module, PassContext& context) {
   KeyTypes key_types(module);
-  ExprTyper typer(module, key_types, context.diags);
+  ExprTyper typer(key_types, context.diags);
   for (ir::StateId id : module.preorder()) checkState(module.state(id), typer, context.diags);
 }
 

@@ -204,7 +204,7 @@ class Limits(TempDirTest):
         for i in range(70):
             self.write(f"s{i}.yml", f"- X:\n    template: StateMachine\n    outcomes: [done]\n"
                                     f"    states:\n      - N: {{script: s{i + 1}}}\n")
-        main = self.write("main.yml", "name: t\ntemplate: Base\nstates:\n  - A: {script: s0}\n")
+        self.write("main.yml", "name: t\ntemplate: Base\nstates:\n  - A: {script: s0}\n")
         r = run("-target=ir", "main.yml", cwd=self.dir)
         self.assertEqual(r.returncode, 1)
         self.assertIn("s63.yml:5:21: error: sub-scripts nested more than 64 deep "

@@ -7,8 +7,7 @@
 // child_termination_cb, which runs without mutex_ held (it may preempt the container).
 #include "smachac/runtime/concurrence.h"
 
-#include <thread>
-
+#include "child_workers.h"
 #include "smachac/runtime/errors.h"
 #include "smachac/runtime/thread_observer.h"
 #include "text.h"
@@ -43,7 +42,8 @@ Concurrence::Concurrence(ConcurrenceSpec spec)
                  .output_keys = std::move(spec.output_keys)},
                 std::move(spec.userdata)),
       spec_(std::move(spec)),
-      run_(std::make_unique<Run>()) {}
+      run_(std::make_unique<Run>()),
+      workers_(std::make_unique<ChildWorkers>()) {}
 
 Concurrence::~Concurrence() = default;
 
@@ -114,26 +114,14 @@ void Concurrence::runAll() {
   ThreadObserver* observer = threadObserver();
   const std::size_t n = children().size();
   if (observer != nullptr) observer->split(n);
-  {
-    std::vector<std::jthread> threads;
-    threads.reserve(n);
-    try {
-      for (std::size_t i = 1; i < n; ++i) threads.emplace_back([this, i] { runOne(i); });
-    } catch (...) {
-      {
-        std::lock_guard lock(mutex_);
-        preemptRunningLocked();
-      }
-      // The children that never started, the first included, have returned at once.
-      for (std::size_t i = threads.size() + 1; observer != nullptr && i <= n; ++i) {
-        observer->returned();
-      }
-      threads.clear();  // joins the threads already started
-      if (observer != nullptr) observer->joined();
-      throw;
-    }
-    runOne(0);
-  }  // joins the other children
+  try {
+    workers_->run(n, [this](std::size_t i) { runOne(i); });
+  } catch (...) {
+    // No worker could be started: no child ran, each has returned at once.
+    for (std::size_t i = 0; observer != nullptr && i < n; ++i) observer->returned();
+    if (observer != nullptr) observer->joined();
+    throw;
+  }
   if (observer != nullptr) observer->joined();
 }
 

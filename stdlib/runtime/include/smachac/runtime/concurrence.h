@@ -33,6 +33,8 @@
 
 namespace smachac::runtime {
 
+class ChildWorkers;
+
 /// container outcome -> {child label -> child outcome}
 using OutcomeMap = std::map<std::string, std::map<std::string, std::string>>;
 /// child label -> outcome, for the children that have returned so far.
@@ -96,10 +98,11 @@ class Concurrence : public Container {
   std::string chooseOutcome(const ChildOutcomes& outcomes_so_far, std::optional<int> entry);
 
   ConcurrenceSpec spec_;
-  std::vector<Entry> entries_;  ///< resolved outcome_map, in map order
-  std::mutex callback_mutex_;   ///< serialises child_termination_cb
-  std::mutex mutex_;            ///< guards run_
-  std::unique_ptr<Run> run_;    ///< state of the current execution
+  std::vector<Entry> entries_;             ///< resolved outcome_map, in map order
+  std::mutex callback_mutex_;              ///< serialises child_termination_cb
+  std::mutex mutex_;                       ///< guards run_
+  std::unique_ptr<Run> run_;               ///< state of the current execution
+  std::unique_ptr<ChildWorkers> workers_;  ///< the children's threads, kept between executions
 };
 
 }  // namespace smachac::runtime

@@ -66,10 +66,12 @@ class ROSBagAPIThreadRecorder(object):
                     rospy.logwarn('Cannot record {}: unknown type {}'.format(topic, type_name))
                     self.unknown.add(topic)
                 return
+            subscriber = rospy.Subscriber(topic, msg_class, self._write, callback_args=topic)
             with self.lock:
                 if self.bag is not None:
-                    self.subscribers[topic] = rospy.Subscriber(topic, msg_class, self._write,
-                                                               callback_args=topic)
+                    self.subscribers[topic] = subscriber
+                    return
+            subscriber.unregister()  # closed meanwhile
 
         def _write(self, msg, topic):
             with self.lock:
@@ -79,10 +81,14 @@ class ROSBagAPIThreadRecorder(object):
         def close(self):
             self.stopped.set()
             self.thread.join()
+            # The bag is taken away under the lock (a write in progress ends first, later
+            # messages are dropped); rospy is called without it, so that no lock of rospy's
+            # is ever waited for while a subscriber's callback waits for this one.
             with self.lock:
-                for subscriber in self.subscribers.values():
-                    subscriber.unregister()
                 bag, self.bag = self.bag, None
+                subscribers, self.subscribers = list(self.subscribers.values()), {}
+            for subscriber in subscribers:
+                subscriber.unregister()
             bag.close()
 
     def __init__(self):

@@ -55,10 +55,10 @@ bench: deps
 
 # smachac beside SMACHA, the real SMACH and python3-jinja2 on the same inputs: one table of
 # figures and paired ratios (bench/compare/README.md). Builds only what it runs.
-bench-compare: deps
+bench-compare: configure
 	cmake -S . -B $(BUILD)-bench $(CMAKE_FLAGS) -DSMACHAC_BUILD_BENCH=ON -DSMACHAC_BUILD_TESTS=OFF
 	cmake --build $(BUILD)-bench -j $(JOBS) --target smachac smachac_runtime bench_tmpl
-	@/usr/bin/python3 bench/compare/run.py $(BUILD)-bench
+	@SMACHAC_TEST_BUILD=$(BUILD) /usr/bin/python3 bench/compare/run.py $(BUILD)-bench
 
 # Each libFuzzer harness for FUZZ_SECONDS with ASan + UBSan (clang); crashes land in
 # build-fuzz/artifacts/ and make the target fail.

@@ -1,8 +1,11 @@
 """The anchors smachac is compared with, found on this machine, each with the reason when it is
 not usable (the rows that need it print "skipped: <reason>").
 
-  SMACHA      the original Python tool, from $SMACHAC_ROS_SOURCES/smacha, else
-              <checkout>/../shared/vendor/smacha. Its package is copied into a temporary
+  SMACHA      the original Python tool, from smacha/ of the upstream sources the ROS tests
+              use: $SMACHAC_ROS_SOURCES, else the SMACHAC_ROS_SOURCES entry the tests' CMake
+              configuration writes into the main build's CMakeCache.txt ($SMACHAC_TEST_BUILD,
+              default <checkout>/build; `make bench-compare` configures that build first).
+              Its package is copied into a temporary
               folder and that copy is patched to import `unittest` instead of `unittest2`
               (Debian 12 has no unittest2); the vendor folder is never written.
   SMACH       the real smach library (executive_smach/smach/src from the same vendor folder,
@@ -21,9 +24,17 @@ CHECKOUT = Path(__file__).resolve().parent.parent.parent
 
 
 def vendor_root():
-    """The folder of upstream sources (holding smacha/ and executive_smach/)."""
+    """The folder of upstream sources (holding smacha/ and executive_smach/): the one the
+    ROS tests use. A path that does not exist makes the anchors that need it skip."""
     sources = os.environ.get("SMACHAC_ROS_SOURCES")
-    return Path(sources) if sources else CHECKOUT.parent / "shared" / "vendor"
+    if sources:
+        return Path(sources)
+    cache = CHECKOUT / os.environ.get("SMACHAC_TEST_BUILD", "build") / "CMakeCache.txt"
+    if cache.exists():
+        for line in cache.read_text(errors="replace").splitlines():
+            if line.startswith("SMACHAC_ROS_SOURCES:"):
+                return Path(line.split("=", 1)[1])
+    return CHECKOUT / "build" / "no-ros-sources-configured"
 
 
 def smacha_root():

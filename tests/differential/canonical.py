@@ -97,14 +97,14 @@ def in_loop(ir_json, path):
         return [t["target"]["text"] for t in siblings[name].get("transitions", [])
                 if t.get("target_kind") == "state" and t["target"]["text"] in siblings]
 
-    seen, todo = set(), successors(parts[-1])
-    while todo:
-        name = todo.pop()
+    seen, frontier = set(), successors(parts[-1])
+    while frontier:
+        name = frontier.pop()
         if name == parts[-1]:
             return True
         if name not in seen:
             seen.add(name)
-            todo.extend(successors(name))
+            frontier.extend(successors(name))
     return False
 
 

@@ -37,9 +37,10 @@ class Lowering {
  public:
   Lowering(const FrontendOptions& options, SourceManager& sources, DiagnosticEmitter& diags)
       : sub_script_alone_(options.sub_script_alone),
+        keep_module_on_error_(options.keep_module_on_error),
         sources_(sources),
         diags_(diags),
-        loader_(options.script_dirs, sources, diags),
+        loader_(options.script_dirs, options.overlay, sources, diags),
         errors_before_(diags.errorCount()) {}
 
   std::optional<ir::Module> run(LoadedYaml loaded) {
@@ -55,7 +56,7 @@ class Lowering {
     module_.state(module_.root()).output_keys = std::move(output_keys);
     for (uint32_t f : loader_.files()) module_.files().push_back(f);
     resolveTransitions(module_);
-    if (diags_.errorCount() > errors_before_) return std::nullopt;
+    if (diags_.errorCount() > errors_before_ && !keep_module_on_error_) return std::nullopt;
     return std::move(module_);
   }
 
@@ -273,6 +274,7 @@ class Lowering {
   }
 
   bool sub_script_alone_;
+  bool keep_module_on_error_;
   SourceManager& sources_;
   DiagnosticEmitter& diags_;
   SubScriptLoader loader_;

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "frontend/document_overlay.h"
 #include "frontend/include_notes.h"
 #include "ir/module.h"
 #include "ir/support/diagnostic_emitter.h"
@@ -31,6 +32,13 @@ struct FrontendOptions {
   IncludeSites* include_sites = nullptr;
   /// lint: a script that is a sub-script is checked in a stand-in (standalone_sub_script.h).
   bool sub_script_alone = false;
+  /// Texts that stand for files, by canonical path (an editor's unsaved documents): a
+  /// sub-script found here is read from here, whether or not it exists on disk.
+  const DocumentOverlay* overlay = nullptr;
+  /// An editor's analysis: the module is returned even when lowering reported errors, as far
+  /// as it got (states whose keys failed are kept as written or left out). It is for
+  /// navigation only: the passes never see a module with frontend errors.
+  bool keep_module_on_error = false;
 };
 
 std::optional<ir::Module> lowerScript(const std::string& path, const FrontendOptions& options,

@@ -51,15 +51,29 @@ std::vector<std::string> SubScriptLoader::candidates(const ir::Name& script) con
   return paths;
 }
 
+const std::string* SubScriptLoader::overlaid(const std::string& canonical) const {
+  if (!overlay_) return nullptr;
+  auto it = overlay_->find(canonical);
+  return it == overlay_->end() ? nullptr : &it->second;
+}
+
+LoadedYaml SubScriptLoader::read(const std::string& path, const std::string& canonical,
+                                 SourceLoc from) {
+  const std::string* text = overlaid(canonical);
+  if (!text) return loadYamlFile(path, from, sources_, diags_);
+  uint32_t file = sources_.addFile(path, *text);
+  return {file, parseYaml(file, sources_, diags_)};
+}
+
 std::optional<SubScriptState> SubScriptLoader::load(const ir::Name& script) {
   std::vector<std::string> tried = candidates(script);
   for (const std::string& path : tried) {
-    if (!isRegularFile(path)) continue;
     std::error_code ec;
     std::string canonical = fs::weakly_canonical(path, ec).string();
+    if (!overlaid(canonical) && !isRegularFile(path)) continue;
     auto it = cache_.find(canonical);
     if (it == cache_.end()) {
-      LoadedYaml loaded = loadYamlFile(path, script.loc, sources_, diags_);
+      LoadedYaml loaded = read(path, canonical, script.loc);
       if (loaded.file != 0) files_.push_back(loaded.file);
       it = cache_.emplace(canonical, Cached{loaded.file, std::move(loaded.root)}).first;
     }

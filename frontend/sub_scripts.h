@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "frontend/document_overlay.h"
 #include "frontend/include_notes.h"
+#include "frontend/yaml_loader.h"
 #include "ir/state.h"
 #include "ir/support/diagnostic_emitter.h"
 #include "ir/support/source_manager.h"
@@ -27,9 +29,10 @@ struct SubScriptState {
 
 class SubScriptLoader {
  public:
-  SubScriptLoader(std::vector<std::string> search_dirs, SourceManager& sources,
-                  DiagnosticEmitter& diags)
-      : search_dirs_(std::move(search_dirs)), sources_(sources), diags_(diags) {}
+  /// `overlay` (may be null): texts that stand for files, by canonical path.
+  SubScriptLoader(std::vector<std::string> search_dirs, const DocumentOverlay* overlay,
+                  SourceManager& sources, DiagnosticEmitter& diags)
+      : search_dirs_(std::move(search_dirs)), overlay_(overlay), sources_(sources), diags_(diags) {}
 
   /// Loads the sub-script named by `script` (its location says which file includes it).
   /// Reports not-found (with the paths tried), parse errors and a wrong shape.
@@ -42,9 +45,13 @@ class SubScriptLoader {
 
  private:
   std::vector<std::string> candidates(const ir::Name& script) const;
+  /// The overlay's text for `canonical`, or null.
+  const std::string* overlaid(const std::string& canonical) const;
+  LoadedYaml read(const std::string& path, const std::string& canonical, SourceLoc from);
   std::optional<SubScriptState> validate(uint32_t file, const ir::Value& root);
 
   std::vector<std::string> search_dirs_;
+  const DocumentOverlay* overlay_;
   SourceManager& sources_;
   DiagnosticEmitter& diags_;
   struct Cached {

@@ -6,10 +6,7 @@
 #include <iostream>
 #include <iterator>
 
-#include "backends/expr/lower_expressions.h"
-#include "backends/target_code_check.h"
-#include "backends/template_check.h"
-#include "frontend/lower.h"
+#include "checker/check_script.h"
 #include "frontend/yaml_loader.h"
 #include "ir/printer.h"
 #include "passes/pipeline.h"
@@ -70,42 +67,25 @@ std::optional<std::string> Session::configure(const std::vector<std::string>& wa
 }
 
 std::optional<ir::Module> Session::compile(const std::string& path) {
-  size_t first = diags_->diagnostics().size();
-  frontend::IncludeSites include_sites;
-  std::optional<ir::Module> module = compileScript(path, include_sites);
-  frontend::noteInclusions(*diags_, first, include_sites);
-  return module;
-}
-
-std::optional<ir::Module> Session::compileScript(const std::string& path,
-                                                 frontend::IncludeSites& include_sites) {
-  frontend::FrontendOptions frontend_options{options_.script_dirs, &include_sites,
-                                             options_.sub_script_alone};
-  std::optional<ir::Module> module;
-  if (path != kStandardInputPath) {
-    module = frontend::lowerScript(path, frontend_options, sources_, *diags_);
-  } else if (std::optional<std::string> text = readStandardInput(*diags_)) {
-    module = frontend::lowerScriptText(std::string(kStandardInputName), std::move(*text),
-                                       frontend_options, sources_, *diags_);
-  }
-  if (!module) return std::nullopt;
-  passes::PassContext context{sources_, *diags_, options_.target};
-  passes::PipelineOptions pipeline;
-  pipeline.disabled.insert(options_.disabled_passes.begin(), options_.disabled_passes.end());
-  pipeline.print_ir_after = options_.print_ir_after;
-  pipeline.optimize = options_.optimize;
-  pipeline.print_ir = [this](std::string_view pass, const ir::Module& m) {
+  checker::CheckOptions check;
+  check.target = options_.target;
+  check.template_dirs = options_.template_dirs;
+  check.script_dirs = options_.script_dirs;
+  check.disabled_passes.insert(options_.disabled_passes.begin(), options_.disabled_passes.end());
+  check.print_ir_after = options_.print_ir_after;
+  check.print_ir = [this](std::string_view pass, const ir::Module& m) {
     std::cerr << "; IR after " << pass << "\n" << ir::printModule(m, sources_);
   };
-  // The template and code checks run after failed graph checks too: their errors are
-  // independent.
-  bool passes_ok = passes::runPipeline(*module, context, pipeline);
-  backends::expr::lowerPortableExpressions(*module, options_.target);
-  bool templates_ok =
-      backends::checkTemplates(*module, options_.target, options_.template_dirs, *diags_);
-  bool code_ok = backends::checkTargetCode(*module, options_.target, *diags_);
-  if (!passes_ok || !templates_ok || !code_ok) return std::nullopt;
-  return module;
+  check.optimize = options_.optimize;
+  check.sub_script_alone = options_.sub_script_alone;
+  if (path != kStandardInputPath) {
+    return checker::checkScript(path, std::nullopt, check, sources_, *diags_).module;
+  }
+  std::optional<std::string> text = readStandardInput(*diags_);
+  if (!text) return std::nullopt;
+  return checker::checkScript(std::string(kStandardInputName), std::move(text), check, sources_,
+                              *diags_)
+      .module;
 }
 
 void Session::printDiagnostics() const {

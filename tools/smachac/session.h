@@ -11,7 +11,6 @@
 #include <string_view>
 #include <vector>
 
-#include "frontend/include_notes.h"
 #include "ir/module.h"
 #include "ir/support/diagnostic_emitter.h"
 #include "ir/support/diagnostic_printer.h"
@@ -60,9 +59,6 @@ class Session {
   const CommonOptions& options() const { return options_; }
 
  private:
-  std::optional<ir::Module> compileScript(const std::string& path,
-                                          frontend::IncludeSites& include_sites);
-
   CommonOptions options_;
   DiagnosticFormat format_ = DiagnosticFormat::Text;
   SourceManager sources_;

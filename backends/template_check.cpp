@@ -102,8 +102,10 @@ class Checker {
     std::optional<std::string> file = env_.resolveScriptTemplate(name.text);
     if (!file) {
       if (reported_.emplace(name.loc.file, name.loc.line, name.loc.column).second) {
+        std::optional<std::string> match = generator::closestTemplate(name.text, path_);
         diags_.emit<DiagKind::UnknownTemplate>(name.loc, name.text, generator::describePath(path_),
-                                               generator::suggestTemplate(name.text, path_));
+                                               didYouMean(match));
+        diags_.fixIt(match);
       }
       return;
     }
@@ -152,8 +154,10 @@ class Checker {
       const TemplateVariable* var = find(meta, a.key.text);
       if (!var) {
         if (isImplicit(a.key.text) || !isIdentifier(a.key.text)) continue;
+        std::optional<std::string> match = closestMatch(a.key.text, declared);
         diags_.emit<DiagKind::UnknownTemplateVariable>(a.key.loc, a.key.text, s.template_name->text,
-                                                       didYouMean(a.key.text, declared));
+                                                       didYouMean(match));
+        diags_.fixIt(match);
         continue;
       }
       checkType(s, a, *var);

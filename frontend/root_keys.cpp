@@ -38,7 +38,9 @@ bool buildRootState(const ir::Value& root, ir::State& state, DiagnosticEmitter& 
     } else if (isKnown(e.key)) {
       typed.asMap().push_back(e);
     } else {
-      diags.emit<DiagKind::UnknownRootKey>(e.key_loc, e.key, didYouMean(e.key, knownRootKeys()));
+      std::optional<std::string> match = closestMatch(e.key, knownRootKeys());
+      diags.emit<DiagKind::UnknownRootKey>(e.key_loc, e.key, didYouMean(match));
+      diags.fixIt(match);
     }
   }
   buildStateFields(typed, state, "the script", diags);

@@ -21,8 +21,10 @@
 namespace smachac::lsp {
 
 struct Analysis {
+  static constexpr int64_t kNotOpen = -1;
+
   std::string uri;
-  int64_t version = 0;
+  int64_t version = 0;  ///< the document's; kNotOpen for a file the editor does not have open
   SourceManager sources;
   uint32_t file = 0;  ///< the document's file id in `sources`
   /// The document's YAML tree (with locations); empty when its YAML does not parse.

@@ -7,6 +7,7 @@
 #include "lsp/capabilities.h"
 #include "lsp/features/diagnostics.h"
 #include "lsp/features/features.h"
+#include "lsp/uri.h"
 
 namespace smachac::lsp {
 namespace {
@@ -26,6 +27,28 @@ const Json& member(const Json& object, const char* key) {
   if (!object.is_object()) return kNull;
   auto it = object.find(key);
   return it == object.end() ? kNull : *it;
+}
+
+/// The workspace folders of an initialize request (or its root URI) as paths.
+std::vector<std::string> workspaceRoots(const Json& params) {
+  std::vector<std::string> roots;
+  const Json& folders = member(params, "workspaceFolders");
+  if (folders.is_array()) {
+    for (const Json& folder : folders) {
+      const Json& uri = member(folder, "uri");
+      if (!uri.is_string()) continue;
+      if (std::optional<std::string> path = pathFromUri(uri.get<std::string>())) {
+        roots.push_back(*path);
+      }
+    }
+  }
+  const Json& root = member(params, "rootUri");
+  if (roots.empty() && root.is_string()) {
+    if (std::optional<std::string> path = pathFromUri(root.get<std::string>())) {
+      roots.push_back(*path);
+    }
+  }
+  return roots;
 }
 
 std::string uriOf(const Json& params) {
@@ -72,8 +95,9 @@ void Server::readMessages() {
     }
     const Json& method = member(message, "method");
     if (method == "$/cancelRequest") queue_.cancel(member(member(message, "params"), "id"));
+    bool is_exit = method == "exit";  // `method` is gone once the message is queued
     queue_.push({Incoming::Kind::Message, std::move(message)});
-    if (method == "exit") return;  // nothing is read after exit
+    if (is_exit) return;  // nothing is read after exit
   }
   queue_.push({Incoming::Kind::End, {}});
 }
@@ -118,6 +142,8 @@ Json Server::answer(const std::string& method, const Json& params) {
   if (method == "initialize") {
     if (phase_ != Phase::Uninitialized) throw std::runtime_error("initialize was sent twice");
     applySettings(member(params, "initializationOptions"));
+    workspace_.setClientCapabilities(member(params, "capabilities"));
+    workspace_.setRoots(workspaceRoots(params));
     const Json& workspace = member(member(params, "capabilities"), "workspace");
     client_has_configuration_ = member(workspace, "configuration") == true;
     phase_ = Phase::Running;
@@ -210,6 +236,9 @@ void Server::publishStale() {
     if (const Analysis* analysis = workspace_.analysis(uri)) {
       notify("textDocument/publishDiagnostics", publishDiagnosticsParams(*analysis));
     }
+  }
+  for (const auto& analysis : workspace_.takeClosedDependents()) {
+    notify("textDocument/publishDiagnostics", publishDiagnosticsParams(*analysis));
   }
 }
 

@@ -18,8 +18,12 @@ void Workspace::opened(const std::string& uri) {
 
 void Workspace::changed(const std::string& uri) {
   markStale(uri);
-  if (const Document* document = documents_.find(uri)) {
-    if (!document->canonical_path.empty()) markDependents(document->canonical_path);
+  const Document* document = documents_.find(uri);
+  if (!document || document->canonical_path.empty()) return;
+  markDependents(document->canonical_path);
+  if (std::find(changed_files_.begin(), changed_files_.end(), document->canonical_path) ==
+      changed_files_.end()) {
+    changed_files_.push_back(document->canonical_path);
   }
 }
 
@@ -30,7 +34,10 @@ void Workspace::closed(const std::string& uri) {
   markAll();
 }
 
-void Workspace::filesChanged() { markAll(); }
+void Workspace::filesChanged() {
+  closed_scripts_.filesChanged();
+  markAll();
+}
 
 const Analysis* Workspace::analysis(const std::string& uri) {
   const Document* document = documents_.find(uri);
@@ -43,6 +50,16 @@ const Analysis* Workspace::analysis(const std::string& uri) {
 std::vector<std::string> Workspace::takeStale() { return std::exchange(stale_, {}); }
 
 std::vector<std::string> Workspace::takeClosed() { return std::exchange(closed_, {}); }
+
+std::vector<std::unique_ptr<Analysis>> Workspace::takeClosedDependents() {
+  std::vector<std::unique_ptr<Analysis>> analyses;
+  for (const std::string& path : std::exchange(changed_files_, {})) {
+    for (auto& analysis : closed_scripts_.includersOf(path, documents_, settings_)) {
+      analyses.push_back(std::move(analysis));
+    }
+  }
+  return analyses;
+}
 
 void Workspace::markAll() {
   for (const Document* document : documents_.all()) markStale(document->uri);

@@ -23,7 +23,19 @@ std::string_view canonicalKey(std::string_view key) {
 std::optional<ScriptView> ScriptView::load(const std::string& path,
                                            const frontend::FrontendOptions& options,
                                            SourceManager& sources, DiagnosticEmitter& diags) {
-  std::optional<ir::Module> module = frontend::lowerScript(path, options, sources, diags);
+  return fromLowered(frontend::lowerScript(path, options, sources, diags), sources, diags);
+}
+
+std::optional<ScriptView> ScriptView::loadText(const std::string& path, std::string text,
+                                               const frontend::FrontendOptions& options,
+                                               SourceManager& sources, DiagnosticEmitter& diags) {
+  return fromLowered(frontend::lowerScriptText(path, std::move(text), options, sources, diags),
+                     sources, diags);
+}
+
+std::optional<ScriptView> ScriptView::fromLowered(std::optional<ir::Module> module,
+                                                  SourceManager& sources,
+                                                  DiagnosticEmitter& diags) {
   if (!module || diags.hasErrors()) return std::nullopt;
   uint32_t file = module->files().front();
   std::optional<ir::Value> root = frontend::parseYaml(file, sources, diags);

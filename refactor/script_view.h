@@ -36,6 +36,11 @@ class ScriptView {
   static std::optional<ScriptView> load(const std::string& path,
                                         const frontend::FrontendOptions& options,
                                         SourceManager& sources, DiagnosticEmitter& diags);
+  /// The same for a script's text in memory (an editor's unsaved document); `path` names it
+  /// in diagnostics and is where its sub-scripts are looked up from.
+  static std::optional<ScriptView> loadText(const std::string& path, std::string text,
+                                            const frontend::FrontendOptions& options,
+                                            SourceManager& sources, DiagnosticEmitter& diags);
 
   ScriptView(ScriptView&&) = default;
   ScriptView& operator=(ScriptView&&) = default;
@@ -54,6 +59,9 @@ class ScriptView {
   std::vector<std::string> names() const;
 
  private:
+  /// The view of a module lowering just made, when there were no errors.
+  static std::optional<ScriptView> fromLowered(std::optional<ir::Module> module,
+                                               SourceManager& sources, DiagnosticEmitter& diags);
   ScriptView(ir::Module module, uint32_t file, std::string text, ir::Value root);
   void collect(const ir::Value& list);
 

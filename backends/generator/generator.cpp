@@ -9,6 +9,7 @@
 #include "backends/generator/state_uuid.h"
 #include "backends/generator/state_variables.h"
 #include "backends/generator/template_runner.h"
+#include "ir/support/suggest.h"
 
 namespace smachac::generator {
 namespace {
@@ -223,8 +224,10 @@ class Generator {
     if (!reported_unknown_.emplace(name.loc.file, name.loc.line, name.loc.column).second) {
       return std::nullopt;
     }
+    std::optional<std::string> match = closestTemplate(name.text, ctx_.path);
     ctx_.diags.emit<DiagKind::UnknownTemplate>(name.loc, name.text, describePath(ctx_.path),
-                                               suggestTemplate(name.text, ctx_.path));
+                                               didYouMean(match));
+    ctx_.diags.fixIt(match);
     return std::nullopt;
   }
 

@@ -111,8 +111,12 @@ std::string describePath(const TemplatePath& path) {
   return out.empty() ? "no template directory" : out;
 }
 
+std::optional<std::string> closestTemplate(std::string_view name, const TemplatePath& path) {
+  return closestMatch(name, templateNames(path));
+}
+
 std::string suggestTemplate(std::string_view name, const TemplatePath& path) {
-  return didYouMean(name, templateNames(path));
+  return didYouMean(closestTemplate(name, path));
 }
 
 SourceLoc TemplateFiles::locate(const tmpl::TemplateError& error) {

@@ -38,6 +38,9 @@ std::string describePath(const TemplatePath& path);
 /// `.`, `..` or empty path segments, which the engine normalises.
 std::optional<std::string> readTemplateSource(const TemplatePath& path, std::string_view name);
 
+/// The template name closest to `name` (ir/support/suggest.h), if one is close enough.
+std::optional<std::string> closestTemplate(std::string_view name, const TemplatePath& path);
+
 /// "; did you mean `X`?" for the closest template name, or "".
 std::string suggestTemplate(std::string_view name, const TemplatePath& path);
 

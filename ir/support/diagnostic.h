@@ -70,6 +70,9 @@ struct Diagnostic {
   SourceLoc loc;
   std::string message;
   std::vector<DiagNote> notes;
+  /// A fix-it: the text that fixes the problem when it replaces the span at `loc` (the name a
+  /// "did you mean" suggests). For editors; the diagnostic printers do not show it.
+  std::optional<std::string> fix;
 };
 
 }  // namespace smachac

@@ -11,12 +11,17 @@ void DiagnosticEmitter::report(DiagKind kind, SourceLoc loc, std::string message
   if (last_dropped_) return;
   if (severity == Severity::Error) ++error_count_;
   if (severity == Severity::Warning) ++warning_count_;
-  diagnostics_.push_back({kind, severity, loc, std::move(message), {}});
+  diagnostics_.push_back({kind, severity, loc, std::move(message), {}, std::nullopt});
 }
 
 void DiagnosticEmitter::note(SourceLoc loc, std::string message) {
   if (last_dropped_ || diagnostics_.empty()) return;
   diagnostics_.back().notes.push_back({loc, std::move(message)});
+}
+
+void DiagnosticEmitter::fixIt(std::optional<std::string> replacement) {
+  if (last_dropped_ || diagnostics_.empty() || !replacement) return;
+  diagnostics_.back().fix = std::move(replacement);
 }
 
 void DiagnosticEmitter::replaceFrom(size_t first, std::vector<Diagnostic> replacement) {

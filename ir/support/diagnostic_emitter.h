@@ -7,6 +7,7 @@
 
 #include <fmt/core.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ class DiagnosticEmitter {
 
   /// Attaches a note to the diagnostic emitted last (dropped if that one was silenced).
   void note(SourceLoc loc, std::string message);
+  /// Gives the diagnostic emitted last a fix-it, the replacement of its span (Diagnostic::fix);
+  /// nothing when `replacement` is empty or that diagnostic was silenced.
+  void fixIt(std::optional<std::string> replacement);
 
   bool hasErrors() const { return error_count_ > 0; }
   size_t errorCount() const { return error_count_; }

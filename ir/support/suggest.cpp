@@ -59,7 +59,10 @@ std::string quotedList(std::span<const std::string> names) {
 }
 
 std::string didYouMean(std::string_view word, std::span<const std::string> candidates) {
-  std::optional<std::string> match = closestMatch(word, candidates);
+  return didYouMean(closestMatch(word, candidates));
+}
+
+std::string didYouMean(const std::optional<std::string>& match) {
   return match ? "; did you mean `" + *match + "`?" : std::string();
 }
 

@@ -27,5 +27,8 @@ std::string quotedList(std::span<const std::string> names);
 
 /// "; did you mean `x`?" or "" — the suffix used by diagnostic messages.
 std::string didYouMean(std::string_view word, std::span<const std::string> candidates);
+/// The same suffix for a match already found (closestMatch), which is also the diagnostic's
+/// fix-it (DiagnosticEmitter::fixIt).
+std::string didYouMean(const std::optional<std::string>& match);
 
 }  // namespace smachac

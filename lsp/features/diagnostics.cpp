@@ -3,6 +3,8 @@
 
 #include <fmt/core.h>
 
+#include <filesystem>
+
 namespace smachac::lsp {
 namespace {
 
@@ -24,6 +26,15 @@ Json locationJson(const Analysis& analysis, const SourceLoc& loc) {
   return {{"uri", analysis.uriOf(loc.file)}, {"range", toJson(lines.rangeOf(loc))}};
 }
 
+/// A sub-script's path as seen from the document's directory (`sub/greet.yml`).
+std::string relativeName(const Analysis& analysis, uint32_t file) {
+  namespace fs = std::filesystem;
+  fs::path path = fs::path(analysis.sources.path(file)).lexically_normal();
+  fs::path base = fs::path(analysis.sources.path(analysis.file)).parent_path();
+  fs::path relative = path.lexically_relative(base.empty() ? fs::path(".") : base);
+  return relative.empty() ? path.string() : relative.string();
+}
+
 /// Where a diagnostic is shown in the document: its own location, or the first place that
 /// includes its file (following inclusions up to the document).
 SourceLoc shownAt(const Analysis& analysis, SourceLoc loc) {
@@ -35,13 +46,15 @@ SourceLoc shownAt(const Analysis& analysis, SourceLoc loc) {
   return loc;
 }
 
+}  // namespace
+
 Json diagnosticJson(const Analysis& analysis, const Diagnostic& diagnostic) {
   SourceLoc at = diagnostic.loc.hasFile() ? shownAt(analysis, diagnostic.loc)
                                           : SourceLoc{analysis.file, 0, 0, 1};
   std::string message = diagnostic.message;
   Json related = Json::array();
   if (diagnostic.loc.hasFile() && diagnostic.loc.file != analysis.file) {
-    message = fmt::format("in {}: {}", analysis.sources.path(diagnostic.loc.file), message);
+    message = fmt::format("in {}: {}", relativeName(analysis, diagnostic.loc.file), message);
     related.push_back(
         {{"location", locationJson(analysis, diagnostic.loc)}, {"message", diagnostic.message}});
   }
@@ -61,14 +74,14 @@ Json diagnosticJson(const Analysis& analysis, const Diagnostic& diagnostic) {
   return json;
 }
 
-}  // namespace
-
 Json publishDiagnosticsParams(const Analysis& analysis) {
   Json diagnostics = Json::array();
   for (const Diagnostic& diagnostic : analysis.diagnostics) {
     diagnostics.push_back(diagnosticJson(analysis, diagnostic));
   }
-  return {{"uri", analysis.uri}, {"version", analysis.version}, {"diagnostics", diagnostics}};
+  Json params = {{"uri", analysis.uri}, {"diagnostics", diagnostics}};
+  if (analysis.version != Analysis::kNotOpen) params["version"] = analysis.version;
+  return params;
 }
 
 }  // namespace smachac::lsp

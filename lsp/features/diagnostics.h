@@ -13,4 +13,8 @@ namespace smachac::lsp {
 /// The params of a publishDiagnostics notification.
 Json publishDiagnosticsParams(const Analysis& analysis);
 
+/// One diagnostic of the analysis as publishDiagnostics shows it (code actions name the
+/// diagnostics they fix with it).
+Json diagnosticJson(const Analysis& analysis, const Diagnostic& diagnostic);
+
 }  // namespace smachac::lsp

@@ -6,4 +6,30 @@
 #include "lsp/json_rpc.h"
 #include "lsp/workspace.h"
 
-namespace smachac::lsp {}  // namespace smachac::lsp
+namespace smachac::lsp {
+
+/// textDocument/codeAction (code_actions.cpp).
+Json codeAction(Workspace& workspace, const Json& params);
+
+/// textDocument/definition (definition.cpp).
+Json definition(Workspace& workspace, const Json& params);
+
+/// textDocument/references (references.cpp).
+Json references(Workspace& workspace, const Json& params);
+
+/// textDocument/hover (hover.cpp).
+Json hover(Workspace& workspace, const Json& params);
+
+/// textDocument/semanticTokens/full (semantic_tokens.cpp).
+Json semanticTokensFull(Workspace& workspace, const Json& params);
+
+/// textDocument/completion (completion.cpp).
+Json completion(Workspace& workspace, const Json& params);
+
+/// textDocument/documentSymbol (symbols.cpp).
+Json documentSymbol(Workspace& workspace, const Json& params);
+
+/// textDocument/foldingRange (folding.cpp).
+Json foldingRange(Workspace& workspace, const Json& params);
+
+}  // namespace smachac::lsp

@@ -114,8 +114,9 @@ ir::Type ExprTyper::unknownName(const ir::ExprNode& node) {
   if (state_->params && state_->params->isMap()) {
     for (const ir::MapEntry& entry : state_->params->asMap()) candidates.push_back(entry.key);
   }
-  diags_.emit<DiagKind::ExprUnknownName>(node.loc, node.name, state_->name.text,
-                                         didYouMean(node.name, candidates));
+  std::optional<std::string> match = closestMatch(node.name, candidates);
+  diags_.emit<DiagKind::ExprUnknownName>(node.loc, node.name, state_->name.text, didYouMean(match));
+  diags_.fixIt(match);
   return ir::Type::any();
 }
 
@@ -179,8 +180,10 @@ ir::Type ExprTyper::call(const ir::ExprNode& node) {
   const ir::ExprFunction* function = ir::findExprFunction(node.name);
   if (!function) {
     std::vector<std::string> names{"len", "min", "max", "abs"};
+    std::optional<std::string> match = closestMatch(node.name, names);
     diags_.emit<DiagKind::ExprUnknownFunction>(node.loc, node.name, ir::exprFunctionList(),
-                                               didYouMean(node.name, names));
+                                               didYouMean(match));
+    diags_.fixIt(match);
     return ir::Type::any();
   }
   uint32_t count = static_cast<uint32_t>(arguments.size());

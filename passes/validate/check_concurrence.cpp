@@ -73,17 +73,20 @@ class ConcurrenceChecker {
     }
     const ir::Name& outcome = *c_.default_outcome;
     if (outcomes_.contains(outcome.text)) return;
+    std::optional<std::string> match = closestMatch(outcome.text, nameTexts(c_.outcomes));
     diags_.emit<DiagKind::UnknownDefaultOutcome>(outcome.loc, outcome.text, c_.name.text,
-                                                 didYouMean(outcome.text, nameTexts(c_.outcomes)));
+                                                 didYouMean(match));
+    diags_.fixIt(match);
   }
 
   /// Reports the entry's problems; returns whether it has none.
   bool checkEntry(const ir::OutcomeMapEntry& entry) {
     bool ok = true;
     if (!outcomes_.contains(entry.outcome.text)) {
-      diags_.emit<DiagKind::UnknownOutcomeMapOutcome>(
-          entry.outcome.loc, entry.outcome.text, c_.name.text,
-          didYouMean(entry.outcome.text, nameTexts(c_.outcomes)));
+      std::optional<std::string> match = closestMatch(entry.outcome.text, nameTexts(c_.outcomes));
+      diags_.emit<DiagKind::UnknownOutcomeMapOutcome>(entry.outcome.loc, entry.outcome.text,
+                                                      c_.name.text, didYouMean(match));
+      diags_.fixIt(match);
       ok = false;
     }
     for (const ir::OutcomeCondition& condition : entry.conditions) {
@@ -95,18 +98,22 @@ class ConcurrenceChecker {
   bool checkCondition(const ir::OutcomeCondition& condition) {
     auto it = children_.find(condition.child.text);
     if (it == children_.end()) {
-      diags_.emit<DiagKind::UnknownOutcomeMapChild>(
-          condition.child.loc, condition.child.text, c_.name.text,
-          didYouMean(condition.child.text, childNames(module_, c_)));
+      std::optional<std::string> match =
+          closestMatch(condition.child.text, childNames(module_, c_));
+      diags_.emit<DiagKind::UnknownOutcomeMapChild>(condition.child.loc, condition.child.text,
+                                                    c_.name.text, didYouMean(match));
+      diags_.fixIt(match);
       return false;
     }
     const ir::State& child = module_.state(it->second);
     if (!declaresOutcomes(child) || contains(child.outcomes, condition.child_outcome.text)) {
       return true;
     }
-    diags_.emit<DiagKind::UndeclaredOutcome>(
-        condition.child_outcome.loc, child.name.text, condition.child_outcome.text,
-        didYouMean(condition.child_outcome.text, nameTexts(child.outcomes)));
+    std::optional<std::string> match =
+        closestMatch(condition.child_outcome.text, nameTexts(child.outcomes));
+    diags_.emit<DiagKind::UndeclaredOutcome>(condition.child_outcome.loc, child.name.text,
+                                             condition.child_outcome.text, didYouMean(match));
+    diags_.fixIt(match);
     return false;
   }
 

@@ -45,15 +45,18 @@ class TransitionChecker {
  private:
   void checkTransition(const ir::State& child, const ir::Transition& t) {
     if (t.target_kind == ir::TargetKind::Unresolved) {
-      diags_.emit<DiagKind::UnknownTransitionTarget>(
-          t.target.loc, t.target.text, container_.name.text, suggestion(t.target.text));
+      std::optional<std::string> match = closestMatch(t.target.text, targets());
+      diags_.emit<DiagKind::UnknownTransitionTarget>(t.target.loc, t.target.text,
+                                                     container_.name.text, suggestion(match));
+      diags_.fixIt(match);
     } else if (t.target_kind == ir::TargetKind::ContainerOutcome) {
       used_.insert(t.target.text);
     }
     if (declaresOutcomes(child) && !contains(child.outcomes, t.outcome.text)) {
-      diags_.emit<DiagKind::UndeclaredOutcome>(
-          t.outcome.loc, child.name.text, t.outcome.text,
-          didYouMean(t.outcome.text, nameTexts(child.outcomes)));
+      std::optional<std::string> match = closestMatch(t.outcome.text, nameTexts(child.outcomes));
+      diags_.emit<DiagKind::UndeclaredOutcome>(t.outcome.loc, child.name.text, t.outcome.text,
+                                               didYouMean(match));
+      diags_.fixIt(match);
     }
   }
 
@@ -77,8 +80,8 @@ class TransitionChecker {
   }
 
   /// "did you mean" a close sibling or outcome; without one, the container's outcomes.
-  std::string suggestion(const std::string& target) {
-    std::string close = didYouMean(target, targets());
+  std::string suggestion(const std::optional<std::string>& match) {
+    std::string close = didYouMean(match);
     if (!close.empty() || container_.outcomes.empty()) return close;
     return "; the outcomes of `" + container_.name.text + "` are " +
            quotedList(nameTexts(container_.outcomes));

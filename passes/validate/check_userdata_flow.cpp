@@ -75,9 +75,11 @@ class FlowChecker {
 
   void reportUndefined(uint32_t child, const KeyUse& read) {
     if (names_.empty()) names_ = scope_.keyNames();
+    std::optional<std::string> match = closestMatch(read.scope_name->text, names_);
     diags_.emit<DiagKind::UndefinedUserdataKey>(read.scope_name->loc, read.scope_name->text,
                                                 reader(child, read), container_.name.text,
-                                                didYouMean(read.scope_name->text, names_));
+                                                didYouMean(match));
+    diags_.fixIt(match);
     if (child != kExit) noteParentHasKey(read);
   }
 

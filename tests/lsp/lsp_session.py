@@ -8,22 +8,27 @@ A session file is a list of blocks; each starts at the beginning of a line:
   -> {JSON}      a message the client sends
   <- {JSON}      the next message the server must send (exactly, compared as JSON)
   args: ...      extra arguments for `smachac lsp` (before the first message)
+  env: NAME=val  an environment variable for the server (repeatable; substitutions apply)
   exit: N        the exit code the server must end with (default 0)
 A JSON block runs until the next block. The runner sends the messages in order; before
 sending the next one, it reads every `<-` reply that follows. After the last block it closes
 the server's input, and the server must then end with no further output.
 
 In message text, `$DIR` is the session file's directory (an absolute path, as in a file URI:
-`file://$DIR/script.yml`) and `"$TEXT(name)"` the content of file `name` in that directory
-as a JSON string. With SMACHAC_UPDATE_GOLDEN=1 the `<-` blocks are rewritten with what the
-server sent (review the diff).
+`file://$DIR/script.yml`), `$TMP` an empty temporary directory the runner makes for the
+session and removes after it (for files the server writes: `env: XDG_CACHE_HOME=$TMP/cache`),
+and `"$TEXT(name)"` the content of file `name` in that directory as a JSON string. With
+SMACHAC_UPDATE_GOLDEN=1 the `<-` blocks are rewritten with what the server sent (review the
+diff).
 """
 import json
 import os
 import re
 import select
+import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 REPLY_TIMEOUT = 30.0
@@ -46,7 +51,7 @@ def parse_session(path):
             if head in ("-> ", "<- "):
                 current = ["send" if head == "-> " else "expect", line[3:]]
                 blocks.append(current)
-            elif line.startswith("args:") or line.startswith("exit:"):
+            elif line.startswith(("args:", "exit:", "env:")):
                 current = None
                 key, _, value = line.partition(":")
                 blocks.append((key, value.strip()))
@@ -59,11 +64,11 @@ def parse_session(path):
     return blocks
 
 
-def substitute(text, directory):
+def substitute(text, directory, temporary):
     def read(match):
         with open(os.path.join(directory, match.group(1)), encoding="utf-8") as f:
             return json.dumps(f.read())
-    return TEXT_REF.sub(read, text).replace("$DIR", directory)
+    return TEXT_REF.sub(read, text).replace("$DIR", directory).replace("$TMP", temporary)
 
 
 def pretty(value, indent=0):
@@ -79,14 +84,14 @@ def pretty(value, indent=0):
     return "[\n" + ",\n".join(items) + "\n" + " " * indent + "]"
 
 
-def unsubstitute(message, directory):
-    return pretty(message).replace(directory, "$DIR")
+def unsubstitute(message, directory, temporary):
+    return pretty(message).replace(directory, "$DIR").replace(temporary, "$TMP")
 
 
 class Server:
-    def __init__(self, command):
+    def __init__(self, command, env):
         self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                        stderr=subprocess.PIPE)
+                                        stderr=subprocess.PIPE, env=env)
         self.buffer = b""
 
     def send(self, message):
@@ -142,21 +147,25 @@ def run_session(smachac, path, update):
     args = [b[1] for b in blocks if b[0] == "args"]
     expected_exit = int(next((b[1] for b in blocks if b[0] == "exit"), "0"))
     command = [smachac, "lsp"] + (args[0].split() if args else [])
-    server = Server(command)
+    temporary = tempfile.mkdtemp(prefix="lsp-session-")
+    env = dict(os.environ)
+    for name, _, value in (b[1].partition("=") for b in blocks if b[0] == "env"):
+        env[name.strip()] = substitute(value.strip(), directory, temporary)
+    server = Server(command, env)
     out, failures = [], []
     try:
         for kind, text in blocks:
             if kind == "send":
-                server.send(json.loads(substitute(text, directory)))
+                server.send(json.loads(substitute(text, directory, temporary)))
                 out.append(f"-> {text}")
             elif kind == "expect":
-                expected = json.loads(substitute(text, directory))
+                expected = json.loads(substitute(text, directory, temporary))
                 actual = server.receive()
                 if actual != expected:
                     failures.append(f"expected {json.dumps(expected, sort_keys=True)}\n"
                                     f"     got {json.dumps(actual, sort_keys=True)}")
-                out.append(f"<- {unsubstitute(actual, directory)}\n")
-            elif kind in ("args", "exit"):
+                out.append(f"<- {unsubstitute(actual, directory, temporary)}\n")
+            elif kind in ("args", "exit", "env"):
                 out.append(f"{kind}: {text}\n")
             else:
                 out.append(text)
@@ -170,7 +179,10 @@ def run_session(smachac, path, update):
         failures.append(str(e))
     finally:
         server.kill()
-    if update and not any("timed out" in f or "closed" in f for f in failures):
+        shutil.rmtree(temporary, ignore_errors=True)
+    broken = ("timed out waiting for the server", "the server closed its output",
+              "the server did not end after its input was closed")
+    if update and not any(f in broken for f in failures):
         with open(path, "w", encoding="utf-8") as f:
             f.write("".join(out))
         return []

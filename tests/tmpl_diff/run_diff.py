@@ -9,7 +9,6 @@ C++ runner (one process for all cases); the results must be byte-identical. The 
 described in README.md. Exit status 1 on any difference.
 """
 import json
-import re
 import subprocess
 import sys
 from pathlib import Path
@@ -18,6 +17,9 @@ import jinja2
 import yaml
 
 import smacha_jinja
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "harness"))
+from yaml12 import Yaml12Loader  # noqa: E402
 
 # --- the case files -------------------------------------------------------------------------
 
@@ -76,50 +78,6 @@ def make_env(templates, skip=()):
 
 
 # --- YAML 1.2 core schema contexts ---------------------------------------------------------
-
-
-class Yaml12Loader(yaml.SafeLoader):
-    pass
-
-
-Yaml12Loader.yaml_implicit_resolvers = {
-    first: [r for r in resolvers if r[0] == "tag:yaml.org,2002:str"]
-    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()
-}
-Yaml12Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:bool", re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"), list("tTfF"))
-Yaml12Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:int", re.compile(r"^(?:[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+)$"),
-    list("-+0123456789"))
-Yaml12Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:float",
-    re.compile(r"^(?:[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?"
-               r"|[-+]?\.(?:inf|Inf|INF)|\.(?:nan|NaN|NAN))$"),
-    list("-+0123456789."))
-Yaml12Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:null", re.compile(r"^(?:~|null|Null|NULL|)$"), ["~", "n", "N", ""])
-
-
-def construct_int(loader, node):
-    text = loader.construct_scalar(node)
-    if text.startswith(("0o", "0x")):
-        return int(text, 0)
-    return int(text)
-
-
-def construct_float(loader, node):
-    text = loader.construct_scalar(node).lower()
-    if text.endswith(".inf"):
-        return float("-inf") if text.startswith("-") else float("inf")
-    if text == ".nan":
-        return float("nan")
-    return float(text)
-
-
-Yaml12Loader.add_constructor("tag:yaml.org,2002:int", construct_int)
-Yaml12Loader.add_constructor("tag:yaml.org,2002:float", construct_float)
-Yaml12Loader.add_constructor(
-    "tag:yaml.org,2002:bool", lambda loader, node: loader.construct_scalar(node).lower() == "true")
 
 
 def load_context(lines):

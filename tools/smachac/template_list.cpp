@@ -4,11 +4,7 @@
 #include <memory>
 #include <string_view>
 
-#include "backends/cpp/cpp_extensions.h"
-#include "backends/cpp/cpp_target.h"
-#include "backends/flexbe/flexbe_target.h"
-#include "backends/smach/python_extensions.h"
-#include "backends/smach/smach_target.h"
+#include "backends/template_help.h"
 #include "backends/tmpl/value_convert.h"
 #include "backends/tmpl/value_print.h"
 
@@ -59,30 +55,11 @@ std::string summary(tmpl::Environment& env, const std::string& name) {
 
 }  // namespace
 
-generator::TemplatePath targetTemplatePath(const std::string& target,
-                                           const std::vector<std::string>& template_dirs) {
-  if (target == "cpp") return backends::cpp::templatePath(template_dirs);
-  if (target == "flexbe") return backends::flexbe::templatePath(template_dirs);
-  return backends::smach::templatePath(template_dirs);
-}
-
-std::unique_ptr<tmpl::Environment> targetEnvironment(const std::string& target,
-                                                     const generator::TemplatePath& path,
-                                                     const generator::ValueConverter& converter) {
-  auto env = std::make_unique<tmpl::Environment>(path.dirs, path.builtin_sets, path.builtins);
-  if (target == "cpp") {
-    backends::cpp::registerCppExtensions(*env, converter, false);
-  } else {
-    backends::smach::registerPythonExtensions(*env, converter, false);
-  }
-  return env;
-}
-
 void listTemplates(std::ostream& out, const std::string& target,
                    const std::vector<std::string>& template_dirs, const HelpStyle& style) {
-  generator::TemplatePath path = targetTemplatePath(target, template_dirs);
+  generator::TemplatePath path = backends::targetTemplatePath(target, template_dirs);
   generator::ValueConverter converter;
-  std::unique_ptr<tmpl::Environment> env = targetEnvironment(target, path, converter);
+  std::unique_ptr<tmpl::Environment> env = backends::targetEnvironment(target, path, converter);
   out << style.title << target << " templates:" << style.reset << "\n";
   for (const std::string& name : generator::templateNames(path)) {
     out << "  " << style.name << name << style.reset;

@@ -7,6 +7,7 @@
 #include "lsp/json_rpc.h"
 #include "lsp/positions.h"
 #include "lsp/uri.h"
+#include "lsp/workspace.h"
 
 namespace smachac::lsp {
 
@@ -74,6 +75,31 @@ TEST_CASE("incremental changes apply in order; a reversed range changes nothing"
   CHECK(!store.change("untitled:a", 3, reversed));
   CHECK(store.find("untitled:a")->version == 2);
   CHECK(store.overlay().empty());  // not a file
+}
+
+}  // namespace smachac::lsp
+
+namespace smachac::lsp {
+
+TEST_CASE("a workspace analyses a document again after each change") {
+  Workspace workspace({});
+  const std::string uri = "untitled:w.yml";
+  workspace.documents().open(uri,
+                             "name: w\ntemplate: Base\noutcomes: [done]\nuserdata: {text: hi}\n"
+                             "states:\n  - A: {template: PrintUserdataState, input_keys: [text], "
+                             "transitions: {succeeded: done}}\n",
+                             1);
+  workspace.opened(uri);
+  CHECK(workspace.takeStale() == std::vector<std::string>{uri});
+  CHECK(workspace.analysis(uri)->diagnostics.empty());
+  Json change = Json::parse(R"([{"range": {"start": {"line": 5, "character": 59},
+    "end": {"line": 5, "character": 60}}, "text": "u"}])");
+  REQUIRE(workspace.documents().change(uri, 2, change));
+  workspace.changed(uri);
+  const Analysis* analysis = workspace.analysis(uri);
+  REQUIRE(analysis->diagnostics.size() == 1);
+  CHECK(analysis->version == 2);
+  CHECK(workspace.analysis("untitled:other") == nullptr);
 }
 
 }  // namespace smachac::lsp

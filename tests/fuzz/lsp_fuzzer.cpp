@@ -8,6 +8,7 @@
 // Any crash, hang, sanitizer report, failed SMACHAC_CHECK or unanswered request is a bug.
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <set>
 #include <sstream>
 #include <string>
@@ -170,9 +171,18 @@ std::set<int64_t> answered(const std::string& output) {
   return ids;
 }
 
+/// Built-in templates' copies (a definition on `template:`) go to a temporary cache, not the
+/// user's.
+bool useTemporaryCache() {
+  char directory[] = "/tmp/smachac_lsp_fuzzer_XXXXXX";
+  return mkdtemp(directory) != nullptr && setenv("XDG_CACHE_HOME", directory, 1) == 0;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static const bool cache_ready = useTemporaryCache();
+  (void)cache_ready;
   if (size == 0) return 0;
   if (data[0] % 2 == 0) {
     serve(std::string(reinterpret_cast<const char*>(data + 1), size - 1));

@@ -141,8 +141,10 @@ def apply_changes(text, changes):
 class Server:
     def __init__(self, smachac):
         self.stderr = tempfile.TemporaryFile()
+        self.cache = tempfile.TemporaryDirectory()  # built-in templates' copies
         self.process = subprocess.Popen([smachac, "lsp"], stdin=subprocess.PIPE,
-                                        stdout=subprocess.PIPE, stderr=self.stderr, cwd=ROOT)
+                                        stdout=subprocess.PIPE, stderr=self.stderr, cwd=ROOT,
+                                        env=dict(os.environ, XDG_CACHE_HOME=self.cache.name))
         self.buffer = b""
         self.next_id = 1
         self.pending = {}        # id -> (method, cancelled)
@@ -272,6 +274,7 @@ class Server:
         if self.process.poll() is None:
             self.process.kill()
             self.process.wait()
+        self.cache.cleanup()
         self.stderr.seek(0)
         return self.stderr.read().decode(errors="replace")[-2000:]
 

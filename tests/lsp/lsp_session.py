@@ -16,7 +16,7 @@ the server's input, and the server must then end with no further output.
 
 In message text, `$DIR` is the session file's directory (an absolute path, as in a file URI:
 `file://$DIR/script.yml`), `$TMP` an empty temporary directory the runner makes for the
-session and removes after it (for files the server writes: `env: XDG_CACHE_HOME=$TMP/cache`),
+session and removes after it (XDG_CACHE_HOME is `$TMP/cache` unless an `env:` line says otherwise),
 and `"$TEXT(name)"` the content of file `name` in that directory as a JSON string. With
 SMACHAC_UPDATE_GOLDEN=1 the `<-` blocks are rewritten with what the server sent (review the
 diff).
@@ -148,7 +148,8 @@ def run_session(smachac, path, update):
     expected_exit = int(next((b[1] for b in blocks if b[0] == "exit"), "0"))
     command = [smachac, "lsp"] + (args[0].split() if args else [])
     temporary = tempfile.mkdtemp(prefix="lsp-session-")
-    env = dict(os.environ)
+    # Files the server writes (built-in templates' copies) go to the session's directory.
+    env = dict(os.environ, XDG_CACHE_HOME=os.path.join(temporary, "cache"))
     for name, _, value in (b[1].partition("=") for b in blocks if b[0] == "env"):
         env[name.strip()] = substitute(value.strip(), directory, temporary)
     server = Server(command, env)

@@ -119,6 +119,14 @@ std::string cppValueExpression(const tmpl::Value& value) {
   return cppValueExpression(value, [](const tmpl::Value&) { return false; });
 }
 
+std::string cppUserdataArgument(const tmpl::Value& value, const IsForcedString& forced) {
+  bool code = value.isString() && isBacktickCode(value.s()) && !forced(value);
+  if (value.isString() && !code && value.s().find('\0') == std::string::npos) {
+    return cppStringLiteral(value.s());
+  }
+  return cppValueExpression(value, forced);
+}
+
 std::string cppCommentText(std::string_view text) {
   std::string out;
   for (char c : text) {
@@ -160,6 +168,11 @@ void registerCppExtensions(tmpl::Environment& env, const generator::ValueConvert
     expectNoArguments(args, "cppvalue");
     auto forced = [&converter](const tmpl::Value& v) { return converter.isForcedString(v); };
     return tmpl::Value::string(cppValueExpression(input, forced));
+  });
+  env.addFilter("cppuserdata", [&converter](const tmpl::Value& input, const tmpl::CallArgs& args) {
+    expectNoArguments(args, "cppuserdata");
+    auto forced = [&converter](const tmpl::Value& v) { return converter.isForcedString(v); };
+    return tmpl::Value::string(cppUserdataArgument(input, forced));
   });
   env.addFilter("cppcomment", [](const tmpl::Value& input, const tmpl::CallArgs& args) {
     expectNoArguments(args, "cppcomment");

@@ -8,6 +8,10 @@
 //                      as `rt::List{...}`, dicts as `rt::Map{{"k", v}, ...}`; a backtick
 //                      expression ("`code`") is written bare: it is C++ already
 //                      (a `!str` string is a string even when written in backticks)
+//   filter `cppuserdata` a value as a container's `userdata().set(key, ...)` takes it: a string
+//                      that `cppvalue` writes as `std::string("...")` is a bare string literal
+//                      (the store's `set(key, const char*)`: nothing to destroy at the call),
+//                      anything else as `cppvalue` writes it
 //   filter `cppcomment` text that stays on its `//` comment line: control characters and
 //                      backslashes as octal escapes (no line break, no line splice)
 //   test `forced_string`     the value is a string the script tagged `!str`
@@ -34,6 +38,9 @@ std::string cppValueExpression(const tmpl::Value& value, const IsForcedString& f
 
 /// The same, for values without `!str` strings.
 std::string cppValueExpression(const tmpl::Value& value);
+
+/// The argument of a userdata store's `set` (see `cppuserdata` above).
+std::string cppUserdataArgument(const tmpl::Value& value, const IsForcedString& forced);
 
 /// The text of a `//` comment for `text` (see `cppcomment` above).
 std::string cppCommentText(std::string_view text);

@@ -33,10 +33,11 @@ outcomes: []
 {%- endmacro %}
 
 {# `<namespace>.userdata().set("key", value);`, one line per entry, sorted by key; the
-   namespace (a container's variable) lower-cased, keys as written. #}
+   namespace (a container's variable) lower-cased, keys as written; a plain string value is a
+   bare string literal (`cppuserdata`). #}
 {% macro render_userdata(namespace, userdata) -%}
 {% for key, value in userdata.items() | sort -%}
-{{ namespace | lower }}.userdata().set({{ key | cppstr }}, {{ render_value(value) }});
+{{ namespace | lower }}.userdata().set({{ key | cppstr }}, {{ value | cppuserdata }});
 {% endfor -%}
 {% endmacro %}
 
@@ -52,14 +53,16 @@ outcomes: []
 .output_keys = {{ render_list(output_keys) }}
 {%- endmacro %}
 
-{# `rt::StateSpec{.outcomes = ..., .input_keys = ..., .output_keys = ...}`, each field when
-   the state gives it (designated initializers, in declaration order). #}
+{# `rt::SpecLiteral{.outcomes = ..., .input_keys = ..., .output_keys = ...}`, each field when
+   the state gives it (designated initializers, in declaration order). The literal form of
+   rt::StateSpec, which it converts to: nothing to destroy, so that a program of thousands of
+   states compiles fast. #}
 {% macro render_spec(outcomes, input_keys, output_keys) -%}
 {% set fields = [] -%}
 {% if outcomes is defined %}{% do fields.append(render_outcomes(outcomes)) %}{% endif -%}
 {% if input_keys is defined %}{% do fields.append(render_input_keys(input_keys)) %}{% endif -%}
 {% if output_keys is defined %}{% do fields.append(render_output_keys(output_keys)) %}{% endif -%}
-rt::StateSpec{{ '{' }}{{ fields | join(', ') }}{{ '}' }}
+rt::SpecLiteral{{ '{' }}{{ fields | join(', ') }}{{ '}' }}
 {%- endmacro %}
 
 {# One callback: a backtick expression is a C++ callable taking `rt::UserData&` and
@@ -115,14 +118,23 @@ rt::Remapping{{ '{' }}
 {%- if callbacks is defined %}, {{ render_callbacks(state_name, state_uuid, callbacks) }}{% endif %}
 {%- endmacro %}
 
-{# What follows the state in `add(...)`: transitions (not in a Concurrence), remapping. #}
+{# `{{"key", "value"}, ...}`, sorted: a map of strings as `add` takes it (rt::PairsLiteral). #}
+{% macro render_pairs(pairs) -%}
+{{ '{' }}
+{%- for key, value in pairs.items() | sort -%}
+{{ '{' }}{{ key | cppstr }}, {{ value | cppstr }}{{ '}' }}{% if not loop.last %}, {% endif %}
+{%- endfor %}{{ '}' }}
+{%- endmacro %}
+
+{# What follows the state in `add(...)`: transitions (not in a Concurrence), remapping, as
+   literals (`{{"succeeded", "NEXT"}}`). #}
 {% macro render_add_tail(parent_type, transitions, remapping) -%}
 {% if parent_type != 'Concurrence' and (transitions is defined or remapping is defined) -%}
 ,
-    {{ render_transitions(transitions if transitions is defined else {}) }}
+    {{ render_pairs(transitions if transitions is defined else {}) }}
 {%- endif %}
 {%- if remapping is defined %},
-    {{ render_remapping(remapping) }}
+    {{ render_pairs(remapping) }}
 {%- endif %}
 {%- endmacro %}
 

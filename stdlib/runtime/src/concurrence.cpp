@@ -53,6 +53,11 @@ void Concurrence::addState(std::string label, std::unique_ptr<State> state, Rema
   addChild(std::move(label), std::move(state), std::move(remapping));
 }
 
+void Concurrence::addState(std::string_view label, std::unique_ptr<State> state,
+                           PairsLiteral remapping) {
+  addChild(std::string(label), std::move(state), toMap(remapping));
+}
+
 // --- checks ----------------------------------------------------------------------------------
 
 void Concurrence::collectOwnProblems(std::vector<std::string>& problems) {

@@ -71,7 +71,7 @@ std::optional<uint64_t> randomSeed() {
 
 CallbacksState::CallbacksState(StateSpec spec, Callbacks callbacks)
     : State(withDefaultOutcome(std::move(spec))), callbacks_(std::move(callbacks)) {
-  for (const auto& entry : callbacks_) addOutputKey(entry.first);
+  for (const auto& entry : callbacks_) addOutputKey(entry.key);
 }
 
 std::string CallbacksState::execute(UserData& userdata) {
@@ -100,7 +100,7 @@ RandomOutcomeState::RandomOutcomeState(StateSpec spec, Callbacks callbacks,
                                        std::optional<uint64_t> seed)
     : State(withDefaultOutcome(std::move(spec))), callbacks_(std::move(callbacks)), seed_(seed) {
   addOutputKey(kOutcomeKey);
-  for (const auto& entry : callbacks_) addOutputKey(entry.first);
+  for (const auto& entry : callbacks_) addOutputKey(entry.key);
 }
 
 std::string RandomOutcomeState::execute(UserData& userdata) {
@@ -136,7 +136,7 @@ ConditionalOutcomeState::ConditionalOutcomeState(StateSpec spec, Callbacks callb
     addOutputKey(outcome);
   }
   addOutputKey(kOutcomeKey);
-  for (const auto& entry : callbacks_) addOutputKey(entry.first);
+  for (const auto& entry : callbacks_) addOutputKey(entry.key);
 }
 
 // As the template's class: a condition whose key is not set (no callback wrote it, nothing

@@ -70,7 +70,7 @@ std::string csvRow(const std::vector<std::string>& fields, const std::string& de
 
 DeleteFileState::DeleteFileState(StateSpec spec, Callbacks callbacks)
     : State(withFileKeys(std::move(spec), {"file"})), callbacks_(std::move(callbacks)) {
-  for (const auto& entry : callbacks_) addOutputKey(entry.first);
+  for (const auto& entry : callbacks_) addOutputKey(entry.key);
 }
 
 std::string DeleteFileState::execute(UserData& userdata) {
@@ -87,7 +87,7 @@ WriteCSVFileState::WriteCSVFileState(std::string delimiter, StateSpec spec, Call
     : State(withFileKeys(std::move(spec), {"file", "data_keys"})),
       delimiter_(std::move(delimiter)),
       callbacks_(std::move(callbacks)) {
-  for (const auto& entry : callbacks_) addOutputKey(entry.first);
+  for (const auto& entry : callbacks_) addOutputKey(entry.key);
 }
 
 std::vector<std::string> WriteCSVFileState::row(UserData& userdata) const {

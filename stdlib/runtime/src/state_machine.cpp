@@ -8,6 +8,8 @@
 // guards current_ and preempted_ against requestPreempt() from other threads.
 #include "smachac/runtime/state_machine.h"
 
+#include <mutex>
+
 #include "smachac/runtime/errors.h"
 #include "text.h"
 
@@ -27,6 +29,11 @@ void StateMachine::addState(std::string label, std::unique_ptr<State> state,
                             Transitions transitions, Remapping remapping) {
   addChild(std::move(label), std::move(state), std::move(remapping));
   transitions_.push_back(std::move(transitions));
+}
+
+void StateMachine::addState(std::string_view label, std::unique_ptr<State> state,
+                            PairsLiteral transitions, PairsLiteral remapping) {
+  addState(std::string(label), std::move(state), toMap(transitions), toMap(remapping));
 }
 
 void StateMachine::collectOwnProblems(std::vector<std::string>& problems) {

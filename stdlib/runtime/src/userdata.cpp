@@ -2,6 +2,7 @@
 #include "smachac/runtime/userdata.h"
 
 #include <algorithm>
+#include <mutex>
 
 #include "smachac/runtime/state.h"
 #include "text.h"
@@ -30,6 +31,28 @@ void UserDataStore::set(std::string_view key, Value value) {
   } else {
     values_.emplace(std::string(key), std::move(value));
   }
+}
+
+void UserDataStore::setText(std::string_view key, const char* text) { set(key, Value(text)); }
+
+std::optional<Value> UserDataStore::findAt(std::string_view key, Value*& entry) {
+  std::lock_guard lock(mutex_);
+  if (entry == nullptr) {
+    auto it = values_.find(key);
+    if (it == values_.end()) return std::nullopt;
+    entry = &it->second;
+  }
+  return *entry;
+}
+
+void UserDataStore::setAt(std::string_view key, Value*& entry, Value&& value) {
+  std::lock_guard lock(mutex_);
+  if (entry == nullptr) {
+    auto it = values_.find(key);
+    if (it == values_.end()) it = values_.emplace(std::string(key), Value()).first;
+    entry = &it->second;
+  }
+  *entry = std::move(value);
 }
 
 std::optional<Value> UserDataStore::find(std::string_view key) const {
@@ -79,6 +102,13 @@ std::string_view UserData::remap(std::string_view key) const {
   return key;
 }
 
+UserData::Slot& UserData::slot(std::string_view key) const {
+  for (Slot& slot : slots_) {
+    if (slot.key == key) return slot;
+  }
+  return slots_.emplace_back(Slot{.key = std::string(key), .target = std::string(remap(key))});
+}
+
 void UserData::checkInput(std::string_view key) const {
   if (state_->declaresInput(key)) return;
   throw UserDataError("state " + backticked(state_->displayName()) +
@@ -86,9 +116,20 @@ void UserData::checkInput(std::string_view key) const {
                       " (input keys: " + keyList(state_->inputKeys()) + ")");
 }
 
+void UserData::checkOutput(std::string_view key) const {
+  if (state_->declaresOutput(key)) return;
+  throw UserDataError("state " + backticked(state_->displayName()) +
+                      " writes undeclared userdata key " + backticked(key) +
+                      " (output keys: " + keyList(state_->outputKeys()) + ")");
+}
+
 std::optional<Value> UserData::find(std::string_view key) const {
-  checkInput(key);
-  return store_->find(remap(key));
+  Slot& resolved = slot(key);
+  if (!resolved.readable) {
+    checkInput(key);
+    resolved.readable = true;
+  }
+  return store_->findAt(resolved.target, resolved.entry);
 }
 
 Value UserData::at(std::string_view key) const {
@@ -101,15 +142,15 @@ Value UserData::at(std::string_view key) const {
 }
 
 void UserData::set(std::string_view key, Value value) {
-  if (!state_->declaresOutput(key)) {
-    throw UserDataError("state " + backticked(state_->displayName()) +
-                        " writes undeclared userdata key " + backticked(key) +
-                        " (output keys: " + keyList(state_->outputKeys()) + ")");
+  Slot& resolved = slot(key);
+  if (!resolved.writable) {
+    checkOutput(key);
+    resolved.writable = true;
   }
-  std::string_view target = remap(key);
-  store_->set(target, std::move(value));
+  store_->setAt(resolved.target, resolved.entry, std::move(value));
+  const std::string& target = resolved.target;
   if (tracking_ && std::find(written_.begin(), written_.end(), target) == written_.end()) {
-    written_.emplace_back(target);
+    written_.push_back(target);
   }
 }
 

@@ -16,8 +16,8 @@ int main(int argc, char** argv) {
   conditional.userdata().set("size", int64_t{7});
 
   conditional.add("CHECK",
-      std::make_unique<ConditionalOutcomeState>(rt::StateSpec{.outcomes = {"is_small", "is_large", "default"}, .input_keys = {"size"}}, rt::Callbacks{{"is_small", [](rt::UserData& ud) { return ud.get<int64_t>("size") < 5; }}, {"is_large", [](rt::UserData& ud) { return ud.get<int64_t>("size") >= 5; }}}),
-      rt::Transitions{{"default", "unknown"}, {"is_large", "large"}, {"is_small", "small"}});
+      std::make_unique<ConditionalOutcomeState>(rt::SpecLiteral{.outcomes = {"is_small", "is_large", "default"}, .input_keys = {"size"}}, rt::Callbacks{{"is_small", [](rt::UserData& ud) { return ud.get<int64_t>("size") < 5; }}, {"is_large", [](rt::UserData& ud) { return ud.get<int64_t>("size") >= 5; }}}),
+      {{"default", "unknown"}, {"is_large", "large"}, {"is_small", "small"}});
 
   int exit_code = rt::runMain(conditional, argc, argv);
   return exit_code;

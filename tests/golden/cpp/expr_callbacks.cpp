@@ -18,20 +18,20 @@ using rt::ConditionalOutcomeState;
 int main(int argc, char** argv) {
   rt::StateMachine expr_callbacks(rt::StateMachineSpec{.outcomes = {"done", "failed"}});
   expr_callbacks.userdata().set("count", int64_t{0});
-  expr_callbacks.userdata().set("name", std::string("robot"));
+  expr_callbacks.userdata().set("name", "robot");
   expr_callbacks.userdata().set("sizes", rt::List{rt::Value(double{0.5}), rt::Value(int64_t{2}), rt::Value(double{1.25})});
 
   expr_callbacks.add("UPDATE",
-      std::make_unique<CallbacksState>(rt::StateSpec{.input_keys = {"count", "name", "sizes"}, .output_keys = {"count", "label", "ratio", "smallest"}}, rt::Callbacks{{"count", [](rt::UserData& ud) -> rt::Value { return rt::ops::subtract(rt::ops::add(ud.at("count"), rt::ops::multiply(rt::Value(int64_t{3}), rt::Value(int64_t{2}))), rt::Value(int64_t{1})); }}, {"label", [](rt::UserData& ud) -> rt::Value { return ((rt::Value(rt::ops::greater(rt::ops::len(ud.at("name")), rt::Value(int64_t{3})))).truthy() ? rt::ops::add(ud.at("name"), rt::Value(std::string("-1"))) : rt::Value(std::string("anonymous"))); }}, {"ratio", [](rt::UserData& ud) -> rt::Value { return rt::ops::divide(rt::ops::modulo(rt::ops::floorDivide(rt::ops::negate(rt::ops::add(ud.at("count"), rt::Value(int64_t{7}))), rt::Value(int64_t{2})), rt::Value(int64_t{3})), rt::Value(int64_t{4})); }}, {"smallest", [](rt::UserData& ud) -> rt::Value { return rt::ops::logicalOr(rt::ops::min({ud.at("sizes")}), [&] { return rt::ops::abs(rt::ops::negate(rt::Value(double{1.5}))); }); }}}),
-      rt::Transitions{{"succeeded", "DRAW"}});
+      std::make_unique<CallbacksState>(rt::SpecLiteral{.input_keys = {"count", "name", "sizes"}, .output_keys = {"count", "label", "ratio", "smallest"}}, rt::Callbacks{{"count", [](rt::UserData& ud) -> rt::Value { return rt::ops::subtract(rt::ops::add(ud.at("count"), rt::ops::multiply(rt::Value(int64_t{3}), rt::Value(int64_t{2}))), rt::Value(int64_t{1})); }}, {"label", [](rt::UserData& ud) -> rt::Value { return ((rt::Value(rt::ops::greater(rt::ops::len(ud.at("name")), rt::Value(int64_t{3})))).truthy() ? rt::ops::add(ud.at("name"), rt::Value(std::string("-1"))) : rt::Value(std::string("anonymous"))); }}, {"ratio", [](rt::UserData& ud) -> rt::Value { return rt::ops::divide(rt::ops::modulo(rt::ops::floorDivide(rt::ops::negate(rt::ops::add(ud.at("count"), rt::Value(int64_t{7}))), rt::Value(int64_t{2})), rt::Value(int64_t{3})), rt::Value(int64_t{4})); }}, {"smallest", [](rt::UserData& ud) -> rt::Value { return rt::ops::logicalOr(rt::ops::min({ud.at("sizes")}), [&] { return rt::ops::abs(rt::ops::negate(rt::Value(double{1.5}))); }); }}}),
+      {{"succeeded", "DRAW"}});
 
   expr_callbacks.add("DRAW",
-      std::make_unique<RandomOutcomeState>(rt::StateSpec{.outcomes = {"drawn"}, .input_keys = {"count"}}, rt::Callbacks{{"count", [](rt::UserData& ud) -> rt::Value { return rt::ops::max({ud.at("count"), rt::Value(int64_t{10})}); }}}),
-      rt::Transitions{{"drawn", "CHECK"}});
+      std::make_unique<RandomOutcomeState>(rt::SpecLiteral{.outcomes = {"drawn"}, .input_keys = {"count"}}, rt::Callbacks{{"count", [](rt::UserData& ud) -> rt::Value { return rt::ops::max({ud.at("count"), rt::Value(int64_t{10})}); }}}),
+      {{"drawn", "CHECK"}});
 
   expr_callbacks.add("CHECK",
-      std::make_unique<ConditionalOutcomeState>(rt::StateSpec{.outcomes = {"reached", "default"}, .input_keys = {"count", "label"}}, rt::Callbacks{{"reached", [](rt::UserData& ud) -> rt::Value { return rt::ops::logicalAnd(rt::Value(rt::ops::greaterEqual(ud.at("count"), rt::Value(int64_t{10}))), [&] { return rt::Value(!(rt::Value(rt::ops::equal(ud.at("label"), rt::Value(std::string(""))))).truthy()); }); }}}),
-      rt::Transitions{{"default", "failed"}, {"reached", "done"}});
+      std::make_unique<ConditionalOutcomeState>(rt::SpecLiteral{.outcomes = {"reached", "default"}, .input_keys = {"count", "label"}}, rt::Callbacks{{"reached", [](rt::UserData& ud) -> rt::Value { return rt::ops::logicalAnd(rt::Value(rt::ops::greaterEqual(ud.at("count"), rt::Value(int64_t{10}))), [&] { return rt::Value(!(rt::Value(rt::ops::equal(ud.at("label"), rt::Value(std::string(""))))).truthy()); }); }}}),
+      {{"default", "failed"}, {"reached", "done"}});
 
   int exit_code = rt::runMain(expr_callbacks, argc, argv);
   return exit_code;

@@ -27,21 +27,21 @@ std::unique_ptr<rt::StateMachine> build() {
   counter.userdata().set("n", int64_t{0});
 
   counter.add("INC",
-      std::make_unique<CallbacksState>(rt::StateSpec{.input_keys = {"n"}, .output_keys = {"n"}}, rt::Callbacks{{"n", [](rt::UserData& ud) { return ud.get<int64_t>("n") + 1; }}}),
-      rt::Transitions{{"succeeded", "CHECK"}});
+      std::make_unique<CallbacksState>(rt::SpecLiteral{.input_keys = {"n"}, .output_keys = {"n"}}, rt::Callbacks{{"n", [](rt::UserData& ud) { return ud.get<int64_t>("n") + 1; }}}),
+      {{"succeeded", "CHECK"}});
 
   counter.add("CHECK",
-      std::make_unique<ConditionalOutcomeState>(rt::StateSpec{.outcomes = {"finished", "default"}, .input_keys = {"n", "limit"}}, rt::Callbacks{{"finished", [](rt::UserData& ud) { return ud.get<int64_t>("n") >= ud.get<int64_t>("limit"); }}}),
-      rt::Transitions{{"default", "INC"}, {"finished", "REPORT"}});
+      std::make_unique<ConditionalOutcomeState>(rt::SpecLiteral{.outcomes = {"finished", "default"}, .input_keys = {"n", "limit"}}, rt::Callbacks{{"finished", [](rt::UserData& ud) { return ud.get<int64_t>("n") >= ud.get<int64_t>("limit"); }}}),
+      {{"default", "INC"}, {"finished", "REPORT"}});
 
   [&] {
     [[maybe_unused]] auto& sm_report = counter.add("REPORT",
         std::make_unique<rt::StateMachine>(rt::StateMachineSpec{.outcomes = {"shown"}, .input_keys = {"n"}}),
-        rt::Transitions{{"shown", "done"}});
+        {{"shown", "done"}});
 
     sm_report.add("SHOW",
-        std::make_unique<PrintUserdataState>(rt::StateSpec{.input_keys = {"n"}}),
-        rt::Transitions{{"succeeded", "shown"}});
+        std::make_unique<PrintUserdataState>(rt::SpecLiteral{.input_keys = {"n"}}),
+        {{"succeeded", "shown"}});
   }();
 
   return counter_owner;

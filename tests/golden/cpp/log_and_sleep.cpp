@@ -17,12 +17,12 @@ int main(int argc, char** argv) {
   rt::StateMachine log_and_sleep(rt::StateMachineSpec{.outcomes = {"finished", "stopped"}});
 
   log_and_sleep.add("SAY",
-      std::make_unique<LogState>("going to sleep", rt::StateSpec{}),
-      rt::Transitions{{"done", "NAP"}});
+      std::make_unique<LogState>("going to sleep", rt::SpecLiteral{}),
+      {{"done", "NAP"}});
 
   log_and_sleep.add("NAP",
-      std::make_unique<SleepState>(double{0.2}, rt::StateSpec{.outcomes = {"succeeded", "preempted"}}),
-      rt::Transitions{{"preempted", "stopped"}, {"succeeded", "finished"}});
+      std::make_unique<SleepState>(double{0.2}, rt::SpecLiteral{.outcomes = {"succeeded", "preempted"}}),
+      {{"preempted", "stopped"}, {"succeeded", "finished"}});
 
   int exit_code = rt::runMain(log_and_sleep, argc, argv);
   return exit_code;

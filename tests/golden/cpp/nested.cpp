@@ -18,34 +18,34 @@ using rt::RandomOutcomeState;
 
 int main(int argc, char** argv) {
   rt::StateMachine nested(rt::StateMachineSpec{.outcomes = {"succeeded", "aborted"}});
-  nested.userdata().set("greeting", std::string("hello"));
+  nested.userdata().set("greeting", "hello");
 
   [&] {
     [[maybe_unused]] auto& sm_sub = nested.add("SUB",
         std::make_unique<rt::StateMachine>(rt::StateMachineSpec{.outcomes = {"done", "failed"}, .input_keys = {"text"}}),
-        rt::Transitions{{"done", "succeeded"}, {"failed", "aborted"}},
-        rt::Remapping{{"text", "greeting"}});
+        {{"done", "succeeded"}, {"failed", "aborted"}},
+        {{"text", "greeting"}});
     sm_sub.userdata().set("count", int64_t{2});
 
     sm_sub.add("SHOW",
-        std::make_unique<PrintUserdataState>(rt::StateSpec{.input_keys = {"text", "count"}}),
-        rt::Transitions{{"succeeded", "PAR"}});
+        std::make_unique<PrintUserdataState>(rt::SpecLiteral{.input_keys = {"text", "count"}}),
+        {{"succeeded", "PAR"}});
 
     [&] {
       [[maybe_unused]] auto& sm_par = sm_sub.add("PAR",
           std::make_unique<rt::Concurrence>(rt::ConcurrenceSpec{.outcomes = {"all_done", "some_failed"}, .default_outcome = "some_failed", .outcome_map = {{"all_done", {{"LEFT", "succeeded"}, {"RIGHT", "succeeded"}}}}, .early_exit = false}),
-          rt::Transitions{{"all_done", "PICK"}, {"some_failed", "failed"}});
+          {{"all_done", "PICK"}, {"some_failed", "failed"}});
 
       sm_par.add("LEFT",
-          std::make_unique<SleepState>(double{0.01}, rt::StateSpec{}));
+          std::make_unique<SleepState>(double{0.01}, rt::SpecLiteral{}));
 
       sm_par.add("RIGHT",
-          std::make_unique<SleepState>(double{0.02}, rt::StateSpec{}));
+          std::make_unique<SleepState>(double{0.02}, rt::SpecLiteral{}));
     }();
 
     sm_sub.add("PICK",
-        std::make_unique<RandomOutcomeState>(rt::StateSpec{.outcomes = {"done", "again"}}),
-        rt::Transitions{{"again", "SHOW"}});
+        std::make_unique<RandomOutcomeState>(rt::SpecLiteral{.outcomes = {"done", "again"}}),
+        {{"again", "SHOW"}});
   }();
 
   int exit_code = rt::runMain(nested, argc, argv);

@@ -21,16 +21,16 @@ int main(int argc, char** argv) {
   seq.userdata().set("limit", int64_t{3});
 
   seq.add("INC",
-      std::make_unique<CallbacksState>(rt::StateSpec{.input_keys = {"counter"}, .output_keys = {"counter"}}, rt::Callbacks{{"counter", [](rt::UserData& ud) { return ud.get<int64_t>("counter") + 1; }}}),
-      rt::Transitions{{"succeeded", "CHECK"}});
+      std::make_unique<CallbacksState>(rt::SpecLiteral{.input_keys = {"counter"}, .output_keys = {"counter"}}, rt::Callbacks{{"counter", [](rt::UserData& ud) { return ud.get<int64_t>("counter") + 1; }}}),
+      {{"succeeded", "CHECK"}});
 
   seq.add("CHECK",
-      std::make_unique<ConditionalOutcomeState>(rt::StateSpec{.outcomes = {"finished", "default"}, .input_keys = {"counter", "limit"}}, rt::Callbacks{{"finished", [](rt::UserData& ud) { return ud.get<int64_t>("counter") >= ud.get<int64_t>("limit"); }}}),
-      rt::Transitions{{"default", "INC"}, {"finished", "SHOW"}});
+      std::make_unique<ConditionalOutcomeState>(rt::SpecLiteral{.outcomes = {"finished", "default"}, .input_keys = {"counter", "limit"}}, rt::Callbacks{{"finished", [](rt::UserData& ud) { return ud.get<int64_t>("counter") >= ud.get<int64_t>("limit"); }}}),
+      {{"default", "INC"}, {"finished", "SHOW"}});
 
   seq.add("SHOW",
-      std::make_unique<PrintUserdataState>(rt::StateSpec{.input_keys = {"counter"}}),
-      rt::Transitions{{"succeeded", "done"}});
+      std::make_unique<PrintUserdataState>(rt::SpecLiteral{.input_keys = {"counter"}}),
+      {{"succeeded", "done"}});
 
   int exit_code = rt::runMain(seq, argc, argv);
   return exit_code;

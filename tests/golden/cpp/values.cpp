@@ -20,18 +20,18 @@ int main(int argc, char** argv) {
   values.userdata().set("a_negative", int64_t{-42});
   values.userdata().set("a_whole_float", double{2.0});
   values.userdata().set("an_int", int64_t{3});
-  values.userdata().set("backslash", std::string("C:\\temp"));
+  values.userdata().set("backslash", "C:\\temp");
   values.userdata().set("bytes", std::string("nul\000one\001del\177?\?/\"3", 17));
   values.userdata().set("code", std::string(3, 'x'));
-  values.userdata().set("forced", std::string("1.5"));
-  values.userdata().set("newline", std::string("two\nlines\ttab"));
+  values.userdata().set("forced", "1.5");
+  values.userdata().set("newline", "two\nlines\ttab");
   values.userdata().set("nothing", nullptr);
-  values.userdata().set("quote", std::string("say \"it's\""));
-  values.userdata().set("unicode", std::string("h\303\251llo \342\234\223"));
+  values.userdata().set("quote", "say \"it's\"");
+  values.userdata().set("unicode", "h\303\251llo \342\234\223");
 
   values.add("SHOW",
-      std::make_unique<PrintUserdataState>(rt::StateSpec{.input_keys = {"an_int", "a_negative", "a_float", "a_whole_float", "a_bool", "nothing", "a_list", "a_map", "code", "forced", "quote", "backslash", "newline", "unicode", "bytes"}}),
-      rt::Transitions{{"succeeded", "done"}});
+      std::make_unique<PrintUserdataState>(rt::SpecLiteral{.input_keys = {"an_int", "a_negative", "a_float", "a_whole_float", "a_bool", "nothing", "a_list", "a_map", "code", "forced", "quote", "backslash", "newline", "unicode", "bytes"}}),
+      {{"succeeded", "done"}});
 
   int exit_code = rt::runMain(values, argc, argv);
   return exit_code;

@@ -136,3 +136,28 @@ TEST_CASE("the root reads its input keys from the scope given to run") {
   REQUIRE(rt::run(sm, &outside).ok());
   CHECK(outside.get<double>("y") == 2.5);
 }
+
+TEST_CASE("a view sees keys set after its first read, and writes others see") {
+  rt::UserDataStore store;
+  auto state = std::make_unique<LambdaState>(
+      StateSpec{.outcomes = {"done"}, .input_keys = {"x", "y"}, .output_keys = {"y"}},
+      [](UserData&) { return "done"; });
+  rt::Remapping remapping{{"y", "parent_y"}};
+  UserData view(store, *state, &remapping);
+  CHECK_FALSE(view.find("x"));  // resolved while unset
+  store.set("x", 1);
+  CHECK(view.get<int64_t>("x") == 1);
+  store.set("x", "two");
+  CHECK(view.get<std::string>("x") == "two");
+  view.set("y", 3.5);
+  CHECK(store.get<double>("parent_y") == 3.5);
+  CHECK(view.get<double>("y") == 3.5);
+  store.set("parent_y", 4.5);
+  CHECK(view.get<double>("y") == 4.5);
+  CHECK_THROWS_WITH_AS(view.set("x", 1),
+                       "state `root` writes undeclared userdata key `x` (output keys: `y`)",
+                       rt::UserDataError);
+  CHECK_THROWS_WITH_AS(view.set("x", 1),  // still checked once resolved for reading
+                       "state `root` writes undeclared userdata key `x` (output keys: `y`)",
+                       rt::UserDataError);
+}

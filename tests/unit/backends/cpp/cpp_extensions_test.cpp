@@ -61,5 +61,19 @@ TEST_CASE("cppValueExpression writes runtime values") {
   CHECK(cppValueExpression(Value::newList()) == "rt::List{}");
 }
 
+TEST_CASE("cppUserdataArgument writes plain strings as bare literals, the rest as cppvalue") {
+  Value forced = Value::string("`f(1)`");
+  auto isForced = [&forced](const Value& v) { return v.identity() == forced.identity(); };
+  CHECK(cppUserdataArgument(Value::string("a \"b\""), isForced) == "\"a \\\"b\\\"\"");
+  CHECK(cppUserdataArgument(forced, isForced) == "\"`f(1)`\"");
+  CHECK(cppUserdataArgument(Value::string("`f(1)`"), isForced) == "f(1)");
+  CHECK(cppUserdataArgument(Value::string(std::string("a\0b", 3)), isForced) ==
+        "std::string(\"a\\000b\", 3)");
+  CHECK(cppUserdataArgument(Value::integer(2), isForced) == "int64_t{2}");
+  CHECK(cppUserdataArgument(Value::none(), isForced) == "nullptr");
+  CHECK(cppUserdataArgument(Value::newList({Value::string("a")}), isForced) ==
+        "rt::List{rt::Value(std::string(\"a\"))}");
+}
+
 }  // namespace
 }  // namespace smachac::backends::cpp

@@ -27,9 +27,11 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "smachac/runtime/container.h"
+#include "smachac/runtime/literals.h"
 
 namespace smachac::runtime {
 
@@ -60,10 +62,18 @@ class Concurrence : public Container {
   explicit Concurrence(ConcurrenceSpec spec);
   ~Concurrence() override;
 
+  /// Adds a child; returns it (typed). Remapping as a literal: `{{"x", "parent_x"}}`.
   template <std::derived_from<State> T>
-  T& add(std::string label, std::unique_ptr<T> state, Remapping remapping = {}) {
+  T& add(std::string_view label, std::unique_ptr<T> state, PairsLiteral remapping = {}) {
     T* added = state.get();  // addState rejects a null state before it is dereferenced
-    addState(std::move(label), std::move(state), std::move(remapping));
+    addState(label, std::move(state), remapping);
+    return *added;
+  }
+  /// The same with a remapping built at run time.
+  template <std::derived_from<State> T>
+  T& add(std::string_view label, std::unique_ptr<T> state, Remapping remapping) {
+    T* added = state.get();
+    addState(std::string(label), std::move(state), std::move(remapping));
     return *added;
   }
 
@@ -82,6 +92,7 @@ class Concurrence : public Container {
   struct Run;
 
   void addState(std::string label, std::unique_ptr<State> state, Remapping remapping);
+  void addState(std::string_view label, std::unique_ptr<State> state, PairsLiteral remapping);
   void begin();
   void runAll();
   void runOne(std::size_t index);

@@ -16,21 +16,24 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "smachac/runtime/callback.h"
 #include "smachac/runtime/state.h"
 #include "smachac/runtime/value.h"
 
 namespace smachac::runtime {
 
-using Callback = std::function<Value(UserData&)>;
-/// (output key, callback writing it), in the order they run.
-using Callbacks = std::vector<std::pair<std::string, Callback>>;
+/// An output key and the callback computing its value.
+struct KeyedCallback {
+  std::string key;
+  Callback callback;
+};
+/// In the order they run: `{{"n", [](rt::UserData& ud) { ... }}, ...}`.
+using Callbacks = std::vector<KeyedCallback>;
 
 /// Runs `callbacks` in order, writing each result to its key.
 void runCallbacks(const Callbacks& callbacks, UserData& userdata);

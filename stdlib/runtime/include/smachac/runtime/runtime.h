@@ -1,6 +1,7 @@
 // The whole runtime in one include, for generated programs: `namespace rt = smachac::runtime;`.
 #pragma once
 
+#include "smachac/runtime/callback.h"
 #include "smachac/runtime/concurrence.h"
 #include "smachac/runtime/container.h"
 #include "smachac/runtime/core_states.h"
@@ -8,6 +9,8 @@
 #include "smachac/runtime/expression_ops.h"
 #include "smachac/runtime/file_states.h"
 #include "smachac/runtime/lambda_state.h"
+#include "smachac/runtime/light_mutex.h"
+#include "smachac/runtime/literals.h"
 #include "smachac/runtime/run.h"
 #include "smachac/runtime/state.h"
 #include "smachac/runtime/state_machine.h"

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "smachac/runtime/literals.h"
 #include "smachac/runtime/userdata.h"
 
 namespace smachac::runtime {
@@ -25,6 +26,7 @@ inline constexpr std::string_view kPreempted = "preempted";
 
 /// What every state declares, written with designated initializers:
 ///   {.outcomes = {"succeeded", "aborted"}, .input_keys = {"x"}, .output_keys = {"y"}}
+/// Generated code writes SpecLiteral (literals.h), which converts to it.
 struct StateSpec {
   Keys outcomes{};
   Keys input_keys{};

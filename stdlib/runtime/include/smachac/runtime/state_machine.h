@@ -11,11 +11,13 @@
 #include <cstdint>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "smachac/runtime/container.h"
+#include "smachac/runtime/light_mutex.h"
+#include "smachac/runtime/literals.h"
 
 namespace smachac::runtime {
 
@@ -35,11 +37,20 @@ class StateMachine : public Container {
   explicit StateMachine(StateMachineSpec spec);
 
   /// Adds a child; returns it (typed) so generated code can fill a nested container after.
+  /// Transitions and remapping as literals: `{{"succeeded", "NEXT"}}`.
   template <std::derived_from<State> T>
-  T& add(std::string label, std::unique_ptr<T> state, Transitions transitions = {},
-         Remapping remapping = {}) {
+  T& add(std::string_view label, std::unique_ptr<T> state, PairsLiteral transitions = {},
+         PairsLiteral remapping = {}) {
     T* added = state.get();  // addState rejects a null state before it is dereferenced
-    addState(std::move(label), std::move(state), std::move(transitions), std::move(remapping));
+    addState(label, std::move(state), transitions, remapping);
+    return *added;
+  }
+  /// The same with transitions (and remapping) built at run time.
+  template <std::derived_from<State> T>
+  T& add(std::string_view label, std::unique_ptr<T> state, Transitions transitions,
+         Remapping remapping = {}) {
+    T* added = state.get();
+    addState(std::string(label), std::move(state), std::move(transitions), std::move(remapping));
     return *added;
   }
 
@@ -56,6 +67,8 @@ class StateMachine : public Container {
 
   void addState(std::string label, std::unique_ptr<State> state, Transitions transitions,
                 Remapping remapping);
+  void addState(std::string_view label, std::unique_ptr<State> state, PairsLiteral transitions,
+                PairsLiteral remapping);
   void resolveChild(std::size_t index, std::vector<std::string>& problems);
   std::string runFrom(std::size_t index);
   void enterChild(int index);
@@ -67,7 +80,7 @@ class StateMachine : public Container {
 
   std::vector<Transitions> transitions_;    ///< per child, as added
   std::vector<std::vector<Target>> table_;  ///< per child, per declared outcome
-  std::mutex mutex_;                        ///< guards current_, preempted_
+  LightMutex mutex_;                        ///< guards current_, preempted_
   int current_ = -1;                        ///< the child running or about to run, or -1
   int preempted_ = -1;                      ///< the child last asked to preempt, or -1
 };

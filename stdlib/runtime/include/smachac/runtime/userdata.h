@@ -7,16 +7,22 @@
 //
 // Reads return copies (Values share their lists), so concurrent children of a Concurrence can
 // use one scope safely: every store access takes the store's lock.
+//
+// A view resolves each key once, at its first use: whether the state declares it, the store key
+// it is remapped to, and the store's entry for it (a store never removes an entry, so the entry
+// stays where it is). Every later access is a comparison with the few keys the state used and
+// one locked copy, without a lookup in the remapping or the store.
 #pragma once
 
+#include <concepts>
 #include <map>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "smachac/runtime/errors.h"
+#include "smachac/runtime/light_mutex.h"
 #include "smachac/runtime/value.h"
 
 namespace smachac::runtime {
@@ -47,6 +53,12 @@ class UserDataStore {
   UserDataStore& operator=(const UserDataStore&) = delete;
 
   void set(std::string_view key, Value value);
+  /// set(key, Value(text)) without a Value to destroy at the call: generated code sets its
+  /// string userdata with it. A template, so that `0` and `nullptr` still make Values.
+  template <std::same_as<char> Char>
+  void set(std::string_view key, const Char* text) {
+    setText(key, text);
+  }
   std::optional<Value> find(std::string_view key) const;
   bool contains(std::string_view key) const;
   /// Sorted.
@@ -63,15 +75,23 @@ class UserDataStore {
   Value at(std::string_view key) const;
 
  private:
-  static std::string typeMessage(std::string_view key, const TypeError& e);
+  friend class UserData;
 
-  mutable std::mutex mutex_;
-  Map values_;
+  static std::string typeMessage(std::string_view key, const TypeError& e);
+  void setText(std::string_view key, const char* text);
+  /// find(key) and set(key, value) through `entry`, the view's cache of the key's entry:
+  /// null until the key is set, then its entry (entries are never removed or moved).
+  std::optional<Value> findAt(std::string_view key, Value*& entry);
+  void setAt(std::string_view key, Value*& entry, Value&& value);
+
+  mutable LightMutex mutex_;
+  Map values_;  ///< never erased from: views keep pointers to its values
 };
 
 class State;
 
 /// What a state's execute() receives: its own key names, checked against its declared keys.
+/// Used by one thread at a time (its state's execution): it keeps the keys it resolved.
 class UserData {
  public:
   /// A view over `store` for `state`. `remapping` must outlive the view; nullptr: none.
@@ -98,7 +118,18 @@ class UserData {
   const std::vector<std::string>& written() const { return written_; }
 
  private:
+  /// A key the state used, resolved at its first use.
+  struct Slot {
+    std::string key;         ///< the state's name for it
+    std::string target;      ///< the store's: remap(key)
+    bool readable = false;   ///< checked: an input key
+    bool writable = false;   ///< checked: an output key
+    Value* entry = nullptr;  ///< the store's entry, once the key is set
+  };
+
+  Slot& slot(std::string_view key) const;
   void checkInput(std::string_view key) const;
+  void checkOutput(std::string_view key) const;
   std::string typeMessage(std::string_view key, const TypeError& e) const;
 
   UserDataStore* store_;
@@ -106,6 +137,7 @@ class UserData {
   const Remapping* remapping_;
   bool tracking_ = false;
   std::vector<std::string> written_;
+  mutable std::vector<Slot> slots_;  ///< the keys used so far, in the order of first use
 };
 
 }  // namespace smachac::runtime

@@ -84,6 +84,16 @@ class ExitCodes(TempDirTest):
         r = run("--help")
         self.assertEqual(r.returncode, 0)
         self.assertIn("-target", r.stdout.replace("--target", "-target"))
+        self.assertIn("Subcommands: lint, render, contain, extract, lsp, help (", r.stdout)
+
+    def test_lsp_usage_errors_exit_2(self):
+        for args, message in ((["--target=nope"], "unknown target `nope`"),
+                              (["-Wbogus"], "unknown diagnostic kind `bogus`")):
+            with self.subTest(args=args):
+                r = run("lsp", *args)
+                self.assertEqual(r.returncode, 2)
+                self.assertIn(message, r.stderr)
+                self.assertEqual(r.stdout, "")
 
 
 class CommandLine(TempDirTest):
@@ -113,7 +123,7 @@ class CommandLine(TempDirTest):
                          "smachac: error: lint: no input script (see `smachac lint --help`)\n")
 
     def test_help_lists_the_warning_flags(self):
-        for args in (["--help"], ["lint", "--help"]):
+        for args in (["--help"], ["lint", "--help"], ["lsp", "--help"]):
             with self.subTest(args=args):
                 text = run(*args).stdout
                 for flag in ("-Wno-<kind>", "-Werror=<kind>", "-Wall", "-Wextra", "-Weverything",
@@ -121,7 +131,8 @@ class CommandLine(TempDirTest):
                     self.assertIn(flag, text)
 
     def test_list_warnings(self):
-        for args in (["--list-warnings"], ["-list-warnings"], ["lint", "--list-warnings"]):
+        for args in (["--list-warnings"], ["-list-warnings"], ["lint", "--list-warnings"],
+                     ["lsp", "--list-warnings"]):
             with self.subTest(args=args):
                 r = run(*args)
                 self.assertEqual(r.returncode, 0, r.stderr)

@@ -41,11 +41,19 @@ std::string targetNames() {
   return names;
 }
 
+/// The subcommands' words, from commands.def.
+std::string subcommandNames() {
+  std::string names;
+#define SMACHAC_COMMAND(word, function, help) \
+  names += (names.empty() ? "" : ", ") + std::string(word);
+#include "tools/smachac/commands.def"
+  return names;
+}
+
 void setUp(CLI::App& app, CompileOptions& o) {
   app.name("smachac");
-  app.description(
-      "smachac: a compiler for SMACHA state-machine scripts.\n"
-      "Subcommands: lint, render, help, contain, extract (run `smachac <subcommand> --help`).");
+  app.description("smachac: a compiler for SMACHA state-machine scripts.\nSubcommands: " +
+                  subcommandNames() + " (run `smachac <subcommand> --help`).");
   app.set_version_flag("--version", fmt::format("smachac {}", kVersion));
   addScriptInputs(app, o.scripts);
   app.add_option("--target", o.common.target, "output target: " + targetNames());

@@ -24,7 +24,12 @@ int runLsp(const Args& raw_args) {
   app.add_option("-S,--script-dir", settings.script_dirs,
                  "sub-script search directory, after the including file's (repeatable)")
       ->allow_extra_args(false);
+  bool list_warnings = false;
+  app.add_flag("--list-warnings", list_warnings,
+               "list the diagnostic kinds, their defaults and groups, and exit");
+  app.footer(warningFlagsHelp());
   if (std::optional<int> code = parseArgs(app, args)) return *code;
+  if (list_warnings) return printWarningList(), kExitOk;
   if (std::optional<std::string> error = lsp::validateSettings(settings)) {
     return usageError(*error);
   }

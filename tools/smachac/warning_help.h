@@ -5,7 +5,7 @@
 
 namespace smachac::driver {
 
-/// The -W flags and groups, as a footer for the --help of compile and lint.
+/// The -W flags and groups, as a footer for the --help of compile, lint and lsp.
 std::string warningFlagsHelp();
 
 /// --list-warnings: every diagnostic kind, its default and what -W can do with it.

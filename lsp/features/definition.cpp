@@ -36,17 +36,24 @@ Json locationsJson(const Analysis& analysis, const std::vector<const Occurrence*
 
 Json fileStartJson(const std::string& uri) { return {{"uri", uri}, {"range", toJson(Range{})}}; }
 
-Json definition(Workspace& workspace, const Json& params) {
+PointedAt pointedAt(Workspace& workspace, const Json& params) {
   const Analysis* analysis =
       workspace.analysis(params.at("textDocument").at("uri").get<std::string>());
-  if (!analysis) return nullptr;
-  ScriptIndex index(*analysis);
-  const Occurrence* occurrence = index.at(positionFromJson(params.at("position")));
-  if (!occurrence) return nullptr;
-  const Symbol& symbol = index.symbol(occurrence->symbol);
+  if (!analysis) return {};
+  auto index = std::make_unique<ScriptIndex>(*analysis);
+  const Occurrence* occurrence = index->at(positionFromJson(params.at("position")));
+  if (!occurrence) return {};
+  return {std::move(index), occurrence};
+}
+
+Json definition(Workspace& workspace, const Json& params) {
+  PointedAt at = pointedAt(workspace, params);
+  if (!at.occurrence) return nullptr;
+  const Analysis& analysis = at.index->analysis();
+  const Symbol& symbol = at.index->symbol(at.occurrence->symbol);
   if (symbol.kind == SymbolKind::Template) return templateDefinition(workspace, symbol.name);
-  if (symbol.kind == SymbolKind::SubScript) return fileStartJson(analysis->uriOf(symbol.file));
-  Json locations = locationsJson(*analysis, index.definitions(occurrence->symbol));
+  if (symbol.kind == SymbolKind::SubScript) return fileStartJson(analysis.uriOf(symbol.file));
+  Json locations = locationsJson(analysis, at.index->definitions(at.occurrence->symbol));
   return locations.empty() ? Json(nullptr) : locations;
 }
 

@@ -9,11 +9,13 @@
 // lsp/index_templates.h). Nothing there, or nothing declares it: null.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "lsp/analysis.h"
 #include "lsp/json_rpc.h"
 #include "lsp/script_index.h"
+#include "lsp/workspace.h"
 
 namespace smachac::lsp {
 
@@ -25,5 +27,14 @@ Json locationsJson(const Analysis& analysis, const std::vector<const Occurrence*
 
 /// A Location at the start of the file `uri`.
 Json fileStartJson(const std::string& uri);
+
+/// What a navigation request (`textDocument`, `position`) points at: the index of its
+/// document and the occurrence there. Both null when the document is not open or nothing is
+/// there.
+struct PointedAt {
+  std::unique_ptr<ScriptIndex> index;
+  const Occurrence* occurrence = nullptr;
+};
+PointedAt pointedAt(Workspace& workspace, const Json& params);
 
 }  // namespace smachac::lsp

@@ -16,6 +16,7 @@
 #include "backends/template_help.h"
 #include "ir/type.h"
 #include "ir/value_text.h"
+#include "lsp/features/definition.h"
 #include "lsp/features/features.h"
 #include "lsp/index_templates.h"
 #include "lsp/script_index.h"
@@ -189,16 +190,12 @@ std::optional<std::string> hoverText(const Workspace& workspace, const ScriptInd
 }  // namespace
 
 Json hover(Workspace& workspace, const Json& params) {
-  const Analysis* analysis =
-      workspace.analysis(params.at("textDocument").at("uri").get<std::string>());
-  if (!analysis) return nullptr;
-  ScriptIndex index(*analysis);
-  const Occurrence* at = index.at(positionFromJson(params.at("position")));
-  if (!at) return nullptr;
-  std::optional<std::string> text = hoverText(workspace, index, *at);
+  PointedAt at = pointedAt(workspace, params);
+  if (!at.occurrence) return nullptr;
+  std::optional<std::string> text = hoverText(workspace, *at.index, *at.occurrence);
   if (!text) return nullptr;
   return {{"contents", {{"kind", "markdown"}, {"value", *text}}},
-          {"range", toJson(analysis->lines().rangeOf(at->loc))}};
+          {"range", toJson(at.index->analysis().lines().rangeOf(at.occurrence->loc))}};
 }
 
 }  // namespace smachac::lsp

@@ -8,19 +8,15 @@
 namespace smachac::lsp {
 
 Json references(Workspace& workspace, const Json& params) {
-  const Analysis* analysis =
-      workspace.analysis(params.at("textDocument").at("uri").get<std::string>());
-  if (!analysis) return nullptr;
-  ScriptIndex index(*analysis);
-  const Occurrence* occurrence = index.at(positionFromJson(params.at("position")));
-  if (!occurrence) return nullptr;
+  PointedAt at = pointedAt(workspace, params);
+  if (!at.occurrence) return nullptr;
   const Json& context = params.contains("context") ? params["context"] : Json::object();
   bool declarations = context.value("includeDeclaration", false);
   std::vector<const Occurrence*> found;
-  for (const Occurrence* each : index.occurrences(occurrence->symbol)) {
+  for (const Occurrence* each : at.index->occurrences(at.occurrence->symbol)) {
     if (declarations || each->role != Role::Definition) found.push_back(each);
   }
-  return locationsJson(*analysis, found);
+  return locationsJson(at.index->analysis(), found);
 }
 
 }  // namespace smachac::lsp

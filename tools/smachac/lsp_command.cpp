@@ -18,12 +18,7 @@ int runLsp(const Args& raw_args) {
   CLI::App app{"smachac lsp: a Language Server Protocol 3.17 server on standard input/output",
                "smachac lsp"};
   app.add_option("--target", settings.target, "target whose checks apply (smach, flexbe, cpp)");
-  app.add_option("-I,--template-dir", settings.template_dirs,
-                 "template search directory, before the built-ins (repeatable)")
-      ->allow_extra_args(false);
-  app.add_option("-S,--script-dir", settings.script_dirs,
-                 "sub-script search directory, after the including file's (repeatable)")
-      ->allow_extra_args(false);
+  addSearchDirectories(app, settings.template_dirs, settings.script_dirs);
   bool list_warnings = false;
   app.add_flag("--list-warnings", list_warnings,
                "list the diagnostic kinds, their defaults and groups, and exit");

@@ -28,13 +28,18 @@ std::optional<std::string> readStandardInput(DiagnosticEmitter& diags) {
 
 }  // namespace
 
-void addCommonOptions(CLI::App& app, CommonOptions& o) {
-  app.add_option("-I,--template-dir", o.template_dirs,
+void addSearchDirectories(CLI::App& app, std::vector<std::string>& template_dirs,
+                          std::vector<std::string>& script_dirs) {
+  app.add_option("-I,--template-dir", template_dirs,
                  "template search directory, before the built-ins (repeatable)")
       ->allow_extra_args(false);
-  app.add_option("-S,--script-dir", o.script_dirs,
+  app.add_option("-S,--script-dir", script_dirs,
                  "sub-script search directory, after the including file's (repeatable)")
       ->allow_extra_args(false);
+}
+
+void addCommonOptions(CLI::App& app, CommonOptions& o) {
+  addSearchDirectories(app, o.template_dirs, o.script_dirs);
   app.add_option("--fdiagnostics-format", o.diagnostics_format,
                  "diagnostics as text, json or sarif")
       ->check(CLI::IsMember({"text", "json", "sarif"}));

@@ -36,7 +36,11 @@ struct CommonOptions {
   bool sub_script_alone = false;  ///< lint: check a sub-script on its own
 };
 
-/// Registers the common options on a CLI11 app.
+/// Registers -I and -S (template and sub-script search directories) on a CLI11 app.
+void addSearchDirectories(CLI::App& app, std::vector<std::string>& template_dirs,
+                          std::vector<std::string>& script_dirs);
+
+/// Registers the common options on a CLI11 app (-I and -S among them).
 void addCommonOptions(CLI::App& app, CommonOptions& options);
 
 class Session {

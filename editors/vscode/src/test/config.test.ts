@@ -24,7 +24,7 @@ describe('expandPath', () => {
   it('resolves a relative path against the workspace folder', () => {
     assert.equal(expandPath('templates', FOLDER, HOME), '/work/project/templates');
     assert.equal(expandPath('./a/../b', FOLDER, HOME), '/work/project/b');
-    assert.equal(expandPath('../shared/templates', FOLDER, HOME), '/work/shared/templates');
+    assert.equal(expandPath('../common/templates', FOLDER, HOME), '/work/common/templates');
   });
   it('keeps an absolute path, normalised', () => {
     assert.equal(expandPath('/opt/smachac/templates/', FOLDER, HOME), '/opt/smachac/templates/');

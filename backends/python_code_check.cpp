@@ -22,7 +22,7 @@ std::string shown(const std::string& code) {
 }  // namespace
 
 bool checkPythonCode(const ir::Module& module, DiagnosticEmitter& diags) {
-  const size_t errorsBefore = diags.errorCount();
+  const size_t errors_before = diags.errorCount();
   forEachCode(module, [&](const CodeSite& site) {
     const std::string& code = site.value.asExpression().code;
     if (auto error = pythonExpressionError(code)) {
@@ -30,7 +30,7 @@ bool checkPythonCode(const ir::Module& module, DiagnosticEmitter& diags) {
                                          error->offset + 1, shown(code));
     }
   });
-  return diags.errorCount() == errorsBefore;
+  return diags.errorCount() == errors_before;
 }
 
 }  // namespace smachac::backends

@@ -22,7 +22,7 @@ namespace {
 using smachac::sim::Side;
 using smachac::sim::World;
 
-auto loadOrDie() -> std::unique_ptr<World> {
+std::unique_ptr<World> loadOrDie() {
   smachac::sim::LoadResult loaded = World::loadDefault();
   if (!loaded.world) {
     std::fprintf(stderr, "sim_bench: %s\n", loaded.error.c_str());
@@ -31,19 +31,19 @@ auto loadOrDie() -> std::unique_ptr<World> {
   return std::move(loaded.world);
 }
 
-auto overhead(double x, double y, double z) -> smachac::sim::Pose {
+smachac::sim::Pose overhead(double x, double y, double z) {
   return {{x, y, z}, smachac::sim::overheadOrientation()};
 }
 
 // One run of the pick-and-place experiment; returns false when a step fails.
-auto pickAndPlace(World& world, smachac::sim::Ik& ik) -> bool {
+bool pickAndPlace(World& world, smachac::sim::Ik& ik) {
   world.reset();
   smachac::sim::placeBody(world, "block1", {{0.7, 0.15, -0.13}, {}});
-  if (!world.limb(Side::kLeft).moveToJointPositions(smachac::sim::untuckPose(Side::kLeft)).ok()) {
+  if (!world.limb(Side::Left).moveToJointPositions(smachac::sim::untuckPose(Side::Left)).ok()) {
     return false;
   }
-  return smachac::sim::pickBlock(world, ik, Side::kLeft, overhead(0.7, 0.15, -0.129)).ok &&
-         smachac::sim::placeBlock(world, ik, Side::kLeft, overhead(0.75, 0.0, -0.129)).ok;
+  return smachac::sim::pickBlock(world, ik, Side::Left, overhead(0.7, 0.15, -0.129)).ok &&
+         smachac::sim::placeBlock(world, ik, Side::Left, overhead(0.75, 0.0, -0.129)).ok;
 }
 
 void BM_SimPickAndPlace(benchmark::State& state) {

@@ -2,8 +2,8 @@
 #include "checker/check_script.h"
 
 #include "backends/expr/lower_expressions.h"
+#include "backends/meta/template_check.h"
 #include "backends/target_code_check.h"
-#include "backends/template_check.h"
 #include "frontend/lower.h"
 #include "passes/pipeline.h"
 

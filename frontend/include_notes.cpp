@@ -35,7 +35,7 @@ void noteInclusions(DiagnosticEmitter& diags, size_t first, const IncludeSites& 
     if (d.loc.hasFile() && it != sites.end()) {
       if (!seen.emplace(d.kind, d.loc.file, d.loc.line, d.loc.column).second) continue;
       for (const SourceLoc& site : distinctSites(it->second)) {
-        d.notes.push_back({site, "included from here"});
+        d.notes.push_back(makeNote<DiagNoteKind::IncludedFromHere>(site));
       }
     }
     kept.push_back(std::move(d));

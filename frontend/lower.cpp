@@ -68,9 +68,7 @@ class Lowering {
       SourceLoc where = root.loc.hasFile() ? root.loc : SourceLoc{module_.files()[0], 0, 0, 1};
       diags_.emit<DiagKind::RootNotMapping>(where, describeValue(root));
       if (isSubScript(root)) {
-        diags_.note(where,
-                    "this is a sub-script: compile a script that includes it; `smachac lint` "
-                    "checks it on its own");
+        diags_.note<DiagNoteKind::CompileIncludingScript>(where);
       }
       return false;
     }
@@ -114,6 +112,9 @@ class Lowering {
       }
       expandShorthand(state.value, diags_);
       lowerState({state.key, state.key_loc}, state.value, parent, level, includes, {});
+      // Nothing reads a lowered state's YAML again: freeing it now lets the next states' IR
+      // reuse its memory instead of holding the whole document and the whole IR at once.
+      entry = Value();
     }
   }
 

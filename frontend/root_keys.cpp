@@ -11,10 +11,10 @@ namespace {
 
 const std::vector<std::string>& knownRootKeys() {
   // import_modules and from_imports: the imports a ROS script declares (templates/smach_ros).
-  static const std::vector<std::string> keys = {
+  static const std::vector<std::string> kKeys = {
       "name",      "template",      "outcomes", "states",         "userdata",    "manifest",
       "node_name", "function_name", "params",   "import_modules", "from_imports"};
-  return keys;
+  return kKeys;
 }
 
 bool isKnown(const std::string& key) {

@@ -88,7 +88,7 @@ std::optional<SubScriptState> SubScriptLoader::load(const ir::Name& script) {
     return state;
   }
   diags_.emit<DiagKind::SubScriptNotFound>(script.loc, script.text);
-  for (const std::string& path : tried) diags_.note({}, fmt::format("looked for `{}`", path));
+  for (const std::string& path : tried) diags_.note<DiagNoteKind::LookedFor>({}, path);
   return std::nullopt;
 }
 

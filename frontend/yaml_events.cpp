@@ -96,12 +96,12 @@ std::optional<ir::Value> buildYamlValueWithYamlCpp(uint32_t file, std::string_vi
     }
   } catch (const YAML::DeepRecursion& e) {
     diags.emit<DiagKind::YamlTooComplex>(markLoc(file, e.mark),
-                                         "YAML nested too deeply for the parser");
+                                         Numbered<YamlLimit>{YamlLimit::ParserDepth});
     return std::nullopt;
   } catch (const YAML::Exception& e) {
-    diags.emit<DiagKind::YamlSyntax>(markLoc(file, e.mark), e.msg);
-    if (std::optional<std::string> hint = yamlSyntaxHint(e.msg)) {
-      diags.note(markLoc(file, e.mark), *hint);
+    diags.emit<DiagKind::YamlSyntax>(markLoc(file, e.mark), ForeignMessage(e.msg));
+    if (std::optional<YamlSyntaxHint> hint = yamlSyntaxHint(e.msg)) {
+      diags.note<DiagNoteKind::LikelyYamlMistake>(markLoc(file, e.mark), *hint);
     }
     return std::nullopt;
   }

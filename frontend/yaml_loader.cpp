@@ -29,7 +29,7 @@ std::optional<std::string> readRegularFile(const std::string& path, SourceLoc fr
   }
   uintmax_t size = fs::file_size(path, ec);
   if (!ec && size > kMaxScriptBytes) {
-    diags.emit<DiagKind::FileTooLarge>(from, path, size, kMaxScriptBytes);
+    diags.emit<DiagKind::FileTooLarge>(from, path, std::to_string(size), kMaxScriptBytes);
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);
@@ -52,7 +52,7 @@ std::optional<ir::Value> parseYaml(uint32_t file, const SourceManager& sources,
   if (std::optional<size_t> bad = findInvalidUtf8(text)) {
     bool nul = text[*bad] == '\0';
     diags.emit<DiagKind::InvalidEncoding>(
-        sources.locOf(file, *bad), nul ? "NUL byte in YAML text" : "invalid UTF-8 byte sequence");
+        sources.locOf(file, *bad), nul ? EncodingProblem::NulByte : EncodingProblem::InvalidUtf8);
     return std::nullopt;
   }
   return buildYamlValue(file, text, diags);

@@ -4,12 +4,14 @@
 #pragma once
 
 #include <optional>
-#include <string>
 #include <string_view>
+
+#include "ir/support/diagnostic_arg_types.h"
 
 namespace smachac::frontend {
 
-/// The hint for yaml-cpp's `message`, or nullopt when there is none.
-std::optional<std::string> yamlSyntaxHint(std::string_view message);
+/// The hint for yaml-cpp's `message` (its text: diagnostic_arg_types.h), or nullopt when there
+/// is none.
+std::optional<YamlSyntaxHint> yamlSyntaxHint(std::string_view message);
 
 }  // namespace smachac::frontend

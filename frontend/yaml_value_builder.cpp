@@ -1,8 +1,6 @@
 // YAML events → ir::Value.
 #include "frontend/yaml_value_builder.h"
 
-#include <fmt/core.h>
-
 #include <algorithm>
 #include <iterator>
 
@@ -48,7 +46,8 @@ void YamlValueBuilder::onNull(YamlMark mark, uint64_t anchor) {
 void YamlValueBuilder::onAlias(YamlMark mark, uint64_t anchor) {
   auto it = anchors_.find(anchor);
   if (it == anchors_.end()) {
-    fail<DiagKind::YamlSyntax>(loc(mark), "alias of an anchor that is not complete here");
+    fail<DiagKind::YamlSyntax>(loc(mark),
+                               ForeignMessage("alias of an anchor that is not complete here"));
     return;
   }
   if (!charge(it->second.nodes, loc(mark))) return;
@@ -121,13 +120,14 @@ void YamlValueBuilder::report(SourceLoc where, const Args&... args) {
   diags_.emit<Kind>(where, args...);
 }
 
-void YamlValueBuilder::note(SourceLoc where, std::string message) {
-  if (policy_ == YamlProblems::Report) diags_.note(where, std::move(message));
+template <DiagNoteKind Note>
+void YamlValueBuilder::note(SourceLoc where) {
+  if (policy_ == YamlProblems::Report) diags_.note<Note>(where);
 }
 
-template <DiagKind Kind>
-void YamlValueBuilder::fail(SourceLoc where, const std::string& message) {
-  if (!aborted_) report<Kind>(where, message);
+template <DiagKind Kind, typename Argument>
+void YamlValueBuilder::fail(SourceLoc where, const Argument& argument) {
+  if (!aborted_) report<Kind>(where, argument);
   aborted_ = true;
 }
 
@@ -138,9 +138,7 @@ bool YamlValueBuilder::awaitingKey() const {
 bool YamlValueBuilder::charge(size_t nodes, SourceLoc where) {
   nodes_ += nodes;
   if (nodes_ > kMaxYamlNodes) {
-    fail<DiagKind::YamlTooComplex>(
-        where, fmt::format("YAML document expands to more than {} nodes (aliases included)",
-                           kMaxYamlNodes));
+    fail<DiagKind::YamlTooComplex>(where, Numbered{YamlLimit::Nodes, kMaxYamlNodes});
   }
   return !aborted_;
 }
@@ -148,8 +146,8 @@ bool YamlValueBuilder::charge(size_t nodes, SourceLoc where) {
 bool YamlValueBuilder::chargeAliasText(size_t bytes, SourceLoc where) {
   alias_bytes_ += bytes;
   if (alias_bytes_ > kMaxYamlAliasBytes) {
-    fail<DiagKind::YamlTooComplex>(
-        where, fmt::format("YAML aliases copy more than {} MiB of text", kMaxYamlAliasBytes >> 20));
+    fail<DiagKind::YamlTooComplex>(where,
+                                   Numbered{YamlLimit::AliasMebibytes, kMaxYamlAliasBytes >> 20});
   }
   return !aborted_;
 }
@@ -157,8 +155,7 @@ bool YamlValueBuilder::chargeAliasText(size_t bytes, SourceLoc where) {
 void YamlValueBuilder::open(bool is_map, SourceLoc where, uint64_t anchor) {
   if (aborted_) return;
   if (depth_ >= kMaxYamlDepth) {
-    fail<DiagKind::YamlTooComplex>(
-        where, fmt::format("YAML nested more than {} levels deep", kMaxYamlDepth));
+    fail<DiagKind::YamlTooComplex>(where, Numbered{YamlLimit::Depth, kMaxYamlDepth});
     return;
   }
   if (depth_ == stack_.size()) stack_.emplace_back();
@@ -215,7 +212,7 @@ void YamlValueBuilder::acceptValue(Frame& parent, ir::Value v, bool is_null) {
   for (const ir::MapEntry& e : parent.entries) {
     if (e.key != parent.key) continue;
     report<DiagKind::DuplicateKey>(parent.key_loc, parent.key);
-    note(e.key_loc, "first defined here");
+    note<DiagNoteKind::FirstDefinedHere>(e.key_loc);
     return;
   }
   parent.entries.push_back({std::move(parent.key), parent.key_loc, std::move(v)});

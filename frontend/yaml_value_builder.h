@@ -81,9 +81,10 @@ class YamlValueBuilder {
   ir::Value portableExpr(YamlMark mark, std::string_view value);
   template <DiagKind Kind, typename... Args>
   void report(SourceLoc where, const Args&... args);
-  void note(SourceLoc where, std::string message);
-  template <DiagKind Kind>
-  void fail(SourceLoc where, const std::string& message);
+  template <DiagNoteKind Note>
+  void note(SourceLoc where);
+  template <DiagKind Kind, typename Argument>
+  void fail(SourceLoc where, const Argument& argument);
   bool awaitingKey() const;
   bool charge(size_t nodes, SourceLoc where);
   bool chargeAliasText(size_t bytes, SourceLoc where);

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <iterator>
 
-#include "backends/template_help.h"
-#include "backends/template_meta.h"
+#include "backends/meta/template_help.h"
+#include "backends/meta/template_meta.h"
 #include "ir/support/version.h"
 
 namespace smachac::lsp {

@@ -29,7 +29,7 @@ class TemplateFinder {
   /// The path of the file template `name` is read from (a built-in one's cache copy);
   /// nullopt when there is no such template or its copy cannot be written.
   std::optional<std::filesystem::path> file(std::string_view name);
-  /// The template's documentation in markdown (backends/template_help.h); nullopt when there
+  /// The template's documentation in markdown (backends/meta/template_help.h); nullopt when there
   /// is no such template or it has no meta block that parses.
   std::optional<std::string> documentation(std::string_view name);
   /// The outcomes its meta block lists (empty when unknown).

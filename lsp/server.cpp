@@ -15,11 +15,11 @@ namespace {
 using RequestHandler = Json (*)(Workspace&, const Json&);
 
 const std::map<std::string, RequestHandler, std::less<>>& requestHandlers() {
-  static const std::map<std::string, RequestHandler, std::less<>> handlers = {
+  static const std::map<std::string, RequestHandler, std::less<>> kHandlers = {
 #define SMACHAC_LSP_REQUEST(method, function) {method, &function},
 #include "lsp/requests.def"
   };
-  return handlers;
+  return kHandlers;
 }
 
 const Json& member(const Json& object, const char* key) {

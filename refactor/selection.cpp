@@ -15,7 +15,7 @@ std::string quotedNames(std::span<const std::string> names) {
 }
 
 void noteRootStates(const ScriptView& script, DiagnosticEmitter& diags) {
-  diags.note({}, "the root states are " + quotedNames(script.names()));
+  diags.note<DiagNoteKind::RootStatesAre>({}, quotedNames(script.names()));
 }
 
 /// A state of that name nested in a container, if any.

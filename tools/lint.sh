@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # lint.sh BUILD: `make lint` — the house style, checked. Every C++ file in git (template
 # sources and golden outputs excepted: they are data) must be formatted as .clang-format says,
-# and the lint tests of BUILD must pass (lint/layering: the component graph). Exits non-zero
-# on the first kind of problem found, after listing all of that kind.
+# every C++ source BUILD compiles from the tree must name things as .clang-tidy says (run on
+# BUILD's compile_commands.json; headers of the tree are checked through the sources that
+# include them, generated code in BUILD is not), and the lint tests of BUILD must pass
+# (lint/layering: the component graph). Exits non-zero on the first kind of problem found,
+# after listing all of that kind.
 set -uo pipefail
 build=$(cd "$1" && pwd)
 cd "$(dirname "$0")/.."
@@ -12,4 +15,14 @@ if ! clang-format --dry-run --Werror "${sources[@]}"; then
   exit 1
 fi
 echo "lint: ${#sources[@]} C++ files formatted as .clang-format says"
+root=$(pwd)
+tree="^${root}/(backends|bench|checker|editors|frontend|ir|lsp|passes|refactor|sim|stdlib|templates|tests|tools)/"
+if ! run-clang-tidy -clang-tidy-binary clang-tidy -p "$build" -j 2 -quiet \
+    -header-filter "${tree}|/include_roots/" -extra-arg=-Wno-unknown-warning-option "$tree" \
+    > "$build/clang-tidy.log" 2>&1; then
+  sed "s/\x1b\[[0-9;]*m//g" "$build/clang-tidy.log" | grep -E "error:|warning:" | sort -u >&2
+  echo "lint: names not in the house style (.clang-tidy); whole log: $build/clang-tidy.log" >&2
+  exit 1
+fi
+echo "lint: every C++ source of $build names things as .clang-tidy says"
 ctest --test-dir "$build" -L '^lint$' --output-on-failure

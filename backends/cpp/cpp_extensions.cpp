@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "backends/tmpl/value_print.h"
+#include "backends/tmpl/values/value_print.h"
 
 namespace smachac::backends::cpp {
 namespace {

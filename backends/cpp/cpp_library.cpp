@@ -31,14 +31,14 @@ std::optional<std::string> renderLibraryHeader(const ir::Module& module, tmpl::E
   vars.dict().setString("name", str(root.name.text));
   generator::addStateKeys(root, vars, converter);
   try {
-    std::string text = env.render(kHeaderTemplate, vars, {.skipBlocks = {"meta"}});
+    std::string text = env.render(kHeaderTemplate, vars, {.skip_blocks = {"meta"}});
     size_t end = text.find_last_not_of(" \t\r\n");
     size_t begin = text.find_first_not_of(" \t\r\n");
     if (end == std::string::npos) return std::string();
     return text.substr(begin, end - begin + 1) + "\n";
   } catch (const tmpl::TemplateError& e) {
     generator::TemplateFiles files(context.sources, path.builtins);
-    context.diags.emit<DiagKind::TemplateError>(files.locate(e), e.message());
+    context.diags.emit<DiagKind::TemplateError>(files.locate(e), ForeignMessage(e.message()));
     return std::nullopt;
   }
 }

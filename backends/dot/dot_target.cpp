@@ -5,7 +5,7 @@
 
 #include "backends/dot/dot_view.h"
 #include "backends/tmpl/environment.h"
-#include "backends/tmpl/value_print.h"
+#include "backends/tmpl/values/value_print.h"
 #include "templates/builtin_templates.h"
 
 namespace smachac::backends::dot {
@@ -43,7 +43,7 @@ std::optional<std::vector<OutputFile>> emitDot(const ir::Module& module, EmitCon
     std::string text = env.render("Graph.tpl.dot", vars);
     return std::vector<OutputFile>{{"", text + "\n"}};
   } catch (const tmpl::TemplateError& e) {
-    context.diags.emit<DiagKind::TemplateError>(SourceLoc{}, fmt::format("{}", e.what()));
+    context.diags.emit<DiagKind::TemplateError>(SourceLoc{}, ForeignMessage(e.what()));
     return std::nullopt;
   }
 }

@@ -10,7 +10,7 @@
 
 #include <span>
 
-#include "backends/tmpl/value.h"
+#include "backends/tmpl/values/value.h"
 #include "ir/module.h"
 #include "ir/support/diagnostic.h"
 

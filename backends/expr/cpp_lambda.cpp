@@ -86,7 +86,10 @@ class CppWriter {
   std::string name(const ir::ExprNode& node) {
     ir::ExprName bound = ir::bindExprName(state_, node.name);
     if (bound.kind == ir::ExprNameKind::Param) return valueOf(*bound.param);
-    return "ud.at(" + cpp::cppStringLiteral(node.name) + ")";
+    std::string key = cpp::cppStringLiteral(node.name);
+    if (bound.kind != ir::ExprNameKind::InputKey) return "ud.at(" + key + ")";
+    // The key's position among the state's input keys: the runtime reads it without a search.
+    return "ud.at(" + key + ", " + std::to_string(bound.key - state_.input_keys.data()) + ")";
   }
 
   std::string logical(const ir::ExprNode& node) {

@@ -1,7 +1,7 @@
 // A portable expression as a C++ callback of the smachac runtime:
 // `[](rt::UserData& ud) -> rt::Value { return <expression>; }`. Every operand is an rt::Value
-// (input keys read with `ud.at("key")`, literals and params as Values), every operator a call
-// of rt::ops (stdlib/runtime: expression_ops.h), which computes what Python computes; `and`
+// (input keys read with `ud.at("key", position)`, literals and params as Values), every operator a
+// call of rt::ops (stdlib/runtime: expression_ops.h), which computes what Python computes; `and`
 // and `or` evaluate their right side only when it decides, as Python does.
 #pragma once
 

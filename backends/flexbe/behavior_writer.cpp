@@ -8,7 +8,7 @@
 #include "backends/flexbe/behavior_parameters.h"
 #include "backends/flexbe/embedded_behaviors.h"
 #include "backends/flexbe/explicit_transitions.h"
-#include "backends/template_meta.h"
+#include "backends/meta/template_meta.h"
 
 namespace smachac::backends::flexbe {
 namespace {

@@ -55,7 +55,7 @@ void deriveFromOutcomeMap(const ir::State& concurrence, ir::State& child,
 /// that a default condition for it would never be reached. Entries without conditions do not
 /// count: SMACH 2.5 never chooses them (stdlib/runtime/README.md), and they are not written.
 bool matchesOutcomeMap(const ir::State& concurrence, const ir::List& combination) {
-  auto finishedWith = [&](const ir::OutcomeCondition& c) {
+  auto finished_with = [&](const ir::OutcomeCondition& c) {
     return std::any_of(combination.begin(), combination.end(), [&](const ir::Value& pair) {
       return pair.asList()[0].asString() == c.child.text &&
              pair.asList()[1].asString() == c.child_outcome.text;
@@ -65,7 +65,7 @@ bool matchesOutcomeMap(const ir::State& concurrence, const ir::List& combination
                      [&](const ir::OutcomeMapEntry& entry) {
                        return !entry.conditions.empty() &&
                               std::all_of(entry.conditions.begin(), entry.conditions.end(),
-                                          finishedWith);
+                                          finished_with);
                      });
 }
 

@@ -1,6 +1,9 @@
 // The code buffers and SMACHA's joining rules.
 #include "backends/generator/code_buffers.h"
 
+#include <algorithm>
+#include <utility>
+
 namespace smachac::generator {
 namespace {
 
@@ -33,6 +36,12 @@ std::string joinSnippets(const Snippets& snippets) {
   return out;
 }
 
+/// SMACHA's join, one snippet at a time: the snippet and a newline.
+void appendSnippet(std::string& joined, std::string_view snippet) {
+  joined.append(snippet);
+  joined += '\n';
+}
+
 tmpl::Value stringValue(std::string text, bool strip) {
   if (strip) stripInPlace(text);
   return tmpl::Value::string(std::move(text));
@@ -53,29 +62,26 @@ void CodeBuffers::insert(size_t buffer, std::string snippet, std::string_view co
   const BufferSpec& spec = kSpecs[buffer];
   Buffer& b = buffers_[buffer];
   if (spec.kind == BufferKind::Keyed) {
-    for (Keyed& entry : b.keyed) {
-      if (entry.container == container) {
-        entry.snippets.push_back(std::move(snippet));
-        return;
-      }
-    }
-    b.keyed.push_back({std::string(container), {std::move(snippet)}});
+    auto entry = std::find_if(b.keyed.begin(), b.keyed.end(),
+                              [&](const Keyed& k) { return k.container == container; });
+    if (entry == b.keyed.end()) entry = b.keyed.insert(entry, {std::string(container), {}});
+    appendSnippet(entry->joined, snippet);
   } else if (spec.insertion == Insertion::Prepend) {
-    b.snippets.push_front(std::move(snippet));
+    snippet.shrink_to_fit();  // kept until the end: without the slack of its render
+    b.prepended.push_front(std::move(snippet));
   } else {
-    b.snippets.push_back(std::move(snippet));
+    appendSnippet(b.joined, snippet);
   }
 }
 
 std::string CodeBuffers::joined(size_t buffer) const {
-  return joinSnippets(buffers_[buffer].snippets);
+  const Buffer& b = buffers_[buffer];
+  return kSpecs[buffer].insertion == Insertion::Prepend ? joinSnippets(b.prepended) : b.joined;
 }
 
 std::vector<std::pair<std::string, std::string>> CodeBuffers::joinedEntries(size_t buffer) const {
   std::vector<std::pair<std::string, std::string>> out;
-  for (const Keyed& entry : buffers_[buffer].keyed) {
-    out.emplace_back(entry.container, joinSnippets(entry.snippets));
-  }
+  for (const Keyed& entry : buffers_[buffer].keyed) out.emplace_back(entry.container, entry.joined);
   return out;
 }
 
@@ -86,6 +92,24 @@ tmpl::Value CodeBuffers::value(size_t buffer, bool strip) const {
     dict.dict().setString(container, stringValue(std::move(code), strip));
   }
   return dict;
+}
+
+tmpl::Value CodeBuffers::take(size_t buffer, bool strip) {
+  Buffer& b = buffers_[buffer];
+  if (kSpecs[buffer].kind == BufferKind::Keyed) {
+    tmpl::Value dict = tmpl::Value::newDict();
+    for (Keyed& entry : b.keyed) {
+      dict.dict().setString(entry.container, stringValue(std::move(entry.joined), strip));
+    }
+    b.keyed.clear();
+    return dict;
+  }
+  if (kSpecs[buffer].insertion == Insertion::Prepend) {
+    std::string code = joinSnippets(b.prepended);
+    b.prepended.clear();
+    return stringValue(std::move(code), strip);
+  }
+  return stringValue(std::exchange(b.joined, std::string()), strip);
 }
 
 void stripInPlace(std::string& text) {

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "backends/tmpl/value.h"
+#include "backends/tmpl/values/value.h"
 
 namespace smachac::generator {
 
@@ -36,29 +36,31 @@ std::span<const BufferSpec, kBufferCount> bufferSpecs();
 /// The index of the buffer called `name`, or nullopt.
 std::optional<size_t> bufferIndex(std::string_view name);
 
-/// The snippets of every buffer at one level of the script (the root or a container).
+/// The snippets of every buffer at one level of the script (the root or a container). An
+/// appending buffer keeps its snippets already joined (one string that grows, rather than a
+/// string per snippet with the slack of its render), which the base render then takes whole.
 class CodeBuffers {
  public:
   /// Adds a snippet to a buffer; keyed buffers file it under `container`.
   void insert(size_t buffer, std::string snippet, std::string_view container);
-
   /// The snippets of a list buffer joined as SMACHA does (each followed by a newline).
   std::string joined(size_t buffer) const;
-
   /// The keyed entries of a keyed buffer, each joined, in first-insertion order.
   std::vector<std::pair<std::string, std::string>> joinedEntries(size_t buffer) const;
-
   /// The buffer as a template value: a string for a list buffer, a dict of strings for a keyed
   /// one; `strip` strips every string (what the base template receives).
   tmpl::Value value(size_t buffer, bool strip) const;
+  /// The same, moving the buffer's text out (the buffer is left empty): no copy of the code.
+  tmpl::Value take(size_t buffer, bool strip);
 
  private:
   struct Keyed {
     std::string container;
-    std::vector<std::string> snippets;
+    std::string joined;
   };
   struct Buffer {
-    std::deque<std::string> snippets;
+    std::string joined;                 ///< an appending list buffer's snippets, joined
+    std::deque<std::string> prepended;  ///< a prepending list buffer's snippets, latest first
     std::vector<Keyed> keyed;
   };
   std::array<Buffer, kBufferCount> buffers_;

@@ -97,7 +97,8 @@ class Generator {
     }
   }
 
-  tmpl::Value baseVariables(const ir::State& root, const Level& level) {
+  /// The base template's variables; the root level's buffers are moved into them.
+  tmpl::Value baseVariables(const ir::State& root, Level& level) {
     tmpl::Value vars = tmpl::Value::newDict();
     vars.dict().setString("name", str(root.name.text));
     copyRootKeys(root,
@@ -105,7 +106,7 @@ class Generator {
                   "output_keys", "import_modules", "from_imports"},
                  vars);
     for (size_t b = 0; b < kBufferCount; ++b) {
-      vars.dict().setString(bufferSpecs()[b].name, level.buffers.value(b, /*strip=*/true));
+      vars.dict().setString(bufferSpecs()[b].name, level.buffers.take(b, /*strip=*/true));
     }
     updateDict(vars, level.vars);
     return vars;
@@ -242,10 +243,10 @@ class Generator {
       failed_ = true;
       auto key = std::make_tuple(e.file(), e.line(), e.column(), e.message());
       if (!reported_errors_.insert(key).second) return false;
-      ctx_.diags.emit<DiagKind::TemplateError>(files_.locate(e), e.message());
+      ctx_.diags.emit<DiagKind::TemplateError>(files_.locate(e), ForeignMessage(e.message()));
       SourceLoc where = state.template_name ? state.template_name->loc : state.loc;
-      ctx_.diags.note(where, "while rendering template `" + templateText(state) + "` for `" +
-                                 state.name.text + "`");
+      ctx_.diags.note<DiagNoteKind::WhileRenderingTemplate>(where, templateText(state),
+                                                            state.name.text);
       return false;
     }
   }

@@ -14,7 +14,7 @@
 #include <string_view>
 
 #include "backends/generator/template_values.h"
-#include "backends/tmpl/value.h"
+#include "backends/tmpl/values/value.h"
 #include "ir/state.h"
 
 namespace smachac::generator {

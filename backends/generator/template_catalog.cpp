@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "backends/tmpl/loader.h"
 #include "ir/support/suggest.h"
 
 namespace smachac::generator {
@@ -98,6 +99,22 @@ std::optional<std::string> readTemplateSource(const TemplatePath& path, std::str
     std::string full = withSlash(set) + std::string(name);
     for (const EmbeddedFile& file : path.builtins) {
       if (file.path == full) return std::string(file.content);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> builtinTemplatePath(const TemplatePath& path, std::string_view name) {
+  std::optional<std::string> normal = tmpl::normalizeTemplateName(name);
+  if (!normal) return std::nullopt;
+  for (const std::string& dir : path.dirs) {
+    std::error_code ec;
+    if (fs::is_regular_file(fs::path(dir) / *normal, ec)) return std::nullopt;
+  }
+  for (const std::string& set : path.builtin_sets) {
+    std::string full = withSlash(set) + *normal;
+    for (const EmbeddedFile& file : path.builtins) {
+      if (file.path == full) return full;
     }
   }
   return std::nullopt;

@@ -38,6 +38,11 @@ std::string describePath(const TemplatePath& path);
 /// `.`, `..` or empty path segments, which the engine normalises.
 std::optional<std::string> readTemplateSource(const TemplatePath& path, std::string_view name);
 
+/// The embedded path (e.g. "smach/Base.tpl.py") of the template with exactly this name when
+/// the engine reads it from the built-in sets; nullopt when a directory's file comes first, or
+/// it is not built in.
+std::optional<std::string> builtinTemplatePath(const TemplatePath& path, std::string_view name);
+
 /// The template name closest to `name` (ir/support/suggest.h), if one is close enough.
 std::optional<std::string> closestTemplate(std::string_view name, const TemplatePath& path);
 

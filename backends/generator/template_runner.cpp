@@ -16,25 +16,27 @@ std::optional<std::string> TemplateRunner::resolve(std::string_view script_name)
   return it->second;
 }
 
-const std::vector<std::string>& TemplateRunner::blocks(const std::string& name) {
+const std::vector<TemplateRunner::Block>& TemplateRunner::blocks(const std::string& name) {
   auto it = blocks_.find(name);
   if (it != blocks_.end()) return it->second;
-  std::vector<std::string> blocks;
+  const std::optional<TemplateShape>& shape = shapes_.shape(name);
+  std::vector<Block> blocks;
   for (std::string& block : env_.listBlocks(name)) {
-    bool skipped = std::find(skip_.skipBlocks.begin(), skip_.skipBlocks.end(), block) !=
-                   skip_.skipBlocks.end();
-    if (block != "meta" && !skipped) blocks.push_back(std::move(block));
+    bool skipped = std::find(skip_.skip_blocks.begin(), skip_.skip_blocks.end(), block) !=
+                   skip_.skip_blocks.end();
+    if (block == "meta" || skipped) continue;
+    bool empty = shape && shape->rendersEmpty(block);
+    blocks.push_back({std::move(block), empty});
   }
   return blocks_.emplace(name, std::move(blocks)).first->second;
 }
 
 BlockCode TemplateRunner::renderBlocks(const std::string& name, const tmpl::Value& vars) {
   BlockCode code;
-  const std::optional<TemplateShape>& shape = shapes_.shape(name);
   // Every other block is removed from a block render anyway, the skipped ones included.
-  for (const std::string& block : blocks(name)) {
-    bool empty = shape && shape->rendersEmpty(block);
-    code.emplace_back(block, empty ? std::string() : env_.renderBlock(name, block, vars));
+  for (const Block& block : blocks(name)) {
+    code.emplace_back(
+        block.name, block.renders_empty ? std::string() : env_.renderBlock(name, block.name, vars));
   }
   return code;
 }
@@ -76,7 +78,7 @@ Exports TemplateRunner::withoutLocalVars(Exports all) {
 
 std::string TemplateRunner::renderBase(const std::string& name, const tmpl::Value& vars) {
   tmpl::RenderOptions options = skip_;
-  options.skipBlocks.push_back("meta");
+  options.skip_blocks.push_back("meta");
   std::string code = env_.render(name, vars, options);
   stripInPlace(code);
   return code;

@@ -19,7 +19,8 @@
 
 namespace smachac::generator {
 
-using BlockCode = std::vector<std::pair<std::string, std::string>>;
+/// Block name → its snippet; the names point into the runner's per-template cache.
+using BlockCode = std::vector<std::pair<std::string_view, std::string>>;
 using Exports = std::vector<std::pair<std::string, tmpl::Value>>;
 
 class TemplateRunner {
@@ -48,8 +49,14 @@ class TemplateRunner {
   /// The whole template rendered with `vars`, stripped.
   std::string renderBase(const std::string& name, const tmpl::Value& vars);
 
-  /// The blocks renderBlocks renders (sorted).
-  const std::vector<std::string>& blocks(const std::string& name);
+  /// A block renderBlocks gives, and whether the template's shape shows it renders empty.
+  struct Block {
+    std::string name;
+    bool renders_empty = false;
+  };
+
+  /// The blocks renderBlocks gives (sorted), worked out once per template.
+  const std::vector<Block>& blocks(const std::string& name);
 
  private:
   Exports withoutLocalVars(Exports all);
@@ -61,7 +68,7 @@ class TemplateRunner {
   TemplateShapes shapes_;
   tmpl::RenderOptions skip_;
   std::map<std::string, std::optional<std::string>, std::less<>> resolved_;
-  std::map<std::string, std::vector<std::string>, std::less<>> blocks_;
+  std::map<std::string, std::vector<Block>, std::less<>> blocks_;
   std::map<std::string, tmpl::RenderOptions, std::less<>> without_blocks_;
 };
 

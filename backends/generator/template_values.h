@@ -16,7 +16,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "backends/tmpl/value.h"
+#include "backends/tmpl/values/value.h"
 #include "ir/state.h"
 #include "ir/value.h"
 

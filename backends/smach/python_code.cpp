@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
-#include "backends/tmpl/py_number.h"
-#include "backends/tmpl/value_print.h"
+#include "backends/tmpl/values/py_number.h"
+#include "backends/tmpl/values/value_print.h"
 #include "ir/support/python_keywords.h"
 #include "ir/support/python_text.h"
 

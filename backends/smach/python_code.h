@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-#include "backends/tmpl/value.h"
+#include "backends/tmpl/values/value.h"
 
 namespace smachac::backends::smach {
 

@@ -136,22 +136,22 @@ class Recogniser {
   // lambda_params: a comma-separated list of NAME ['=' expression], '*' [NAME], '**' NAME
   // and '/', with an optional trailing comma.
   void lambdaParams() {
-    bool bareStar = false;  // a `*` without a name needs a named parameter after it
+    bool bare_star = false;  // a `*` without a name needs a named parameter after it
     do {
       if (is(":")) break;
       if (accept("/")) continue;
       if (accept("**")) {
         name();
       } else if (accept("*")) {
-        bareStar = peek().kind != PythonTokenKind::Name;
-        if (!bareStar) name();
+        bare_star = peek().kind != PythonTokenKind::Name;
+        if (!bare_star) name();
       } else {
         name();
-        bareStar = false;
+        bare_star = false;
         if (accept("=")) expression();
       }
     } while (accept(","));
-    if (bareStar) unexpected("a bare `*` needs a named parameter after it");
+    if (bare_star) unexpected("a bare `*` needs a named parameter after it");
   }
 
   void name() {

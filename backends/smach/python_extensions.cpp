@@ -2,7 +2,7 @@
 #include "backends/smach/python_extensions.h"
 
 #include "backends/smach/python_code.h"
-#include "backends/tmpl/value_print.h"
+#include "backends/tmpl/values/value_print.h"
 
 namespace smachac::backends::smach {
 namespace {

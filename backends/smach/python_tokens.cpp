@@ -122,13 +122,14 @@ class Lexer {
     return false;
   }
 
-  bool digits(bool (*isDigitOf)(unsigned char)) {
+  bool digits(bool (*is_digit_of)(unsigned char)) {
     const size_t start = pos_;
     while (pos_ < code_.size()) {
       const unsigned char c = static_cast<unsigned char>(code_[pos_]);
-      if (isDigitOf(c)) {
+      if (is_digit_of(c)) {
         ++pos_;
-      } else if (c == '_' && pos_ > start && isDigitOf(static_cast<unsigned char>(at(pos_ + 1)))) {
+      } else if (c == '_' && pos_ > start &&
+                 is_digit_of(static_cast<unsigned char>(at(pos_ + 1)))) {
         ++pos_;
       } else {
         break;

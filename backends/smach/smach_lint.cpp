@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "backends/smach/python_code.h"
-#include "backends/tmpl/value.h"
+#include "backends/tmpl/values/value.h"
 #include "ir/support/unicode.h"
 
 namespace smachac::backends::smach {

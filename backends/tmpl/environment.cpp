@@ -8,20 +8,20 @@
 #include <set>
 
 #include "backends/tmpl/environment_impl.h"
-#include "backends/tmpl/render.h"
+#include "backends/tmpl/renderer/render.h"
 #include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 
 EnvironmentImpl::EnvironmentImpl(std::vector<std::string> dirs,
-                                 std::vector<std::string> builtinSets,
+                                 std::vector<std::string> builtin_sets,
                                  std::span<const EmbeddedFile> builtins)
-    : loader_(std::move(dirs), std::move(builtinSets), builtins) {}
+    : loader_(std::move(dirs), std::move(builtin_sets), builtins) {}
 
 EnvironmentImpl::~EnvironmentImpl() {
   clearModules();
-  for (const Ref<Context>& ctx : keptContexts_) ctx->clear();
-  for (const Ref<Frame>& frame : keptFrames_) frame->clearSlots();
+  for (const Ref<Context>& ctx : kept_contexts_) ctx->clear();
+  for (const Ref<Frame>& frame : kept_frames_) frame->clearSlots();
 }
 
 const Template& EnvironmentImpl::load(std::string_view name) {
@@ -63,10 +63,22 @@ const std::vector<const std::string*>& EnvironmentImpl::reachableBlocks(const Te
 }
 
 const std::vector<const std::string*>& EnvironmentImpl::reachableByAddress(const Template& tmpl) {
-  if (auto it = reachableByAddress_.find(&tmpl); it != reachableByAddress_.end()) return it->second;
+  if (auto it = reachable_by_address_.find(&tmpl); it != reachable_by_address_.end())
+    return it->second;
   std::vector<const std::string*> names = reachableBlocks(tmpl);
   std::sort(names.begin(), names.end());
-  return reachableByAddress_.emplace(&tmpl, std::move(names)).first->second;
+  return reachable_by_address_.emplace(&tmpl, std::move(names)).first->second;
+}
+
+Ref<Context> EnvironmentImpl::takeSpareContext() {
+  if (spare_contexts_.empty()) return Ref<Context>(new Context());
+  Ref<Context> ctx = std::move(spare_contexts_.back());
+  spare_contexts_.pop_back();
+  return ctx;
+}
+
+void EnvironmentImpl::addSpareContext(Ref<Context> ctx) {
+  if (spare_contexts_.size() < kMaxSpareContexts) spare_contexts_.push_back(std::move(ctx));
 }
 
 void EnvironmentImpl::clearModules() {
@@ -79,7 +91,7 @@ namespace {
 
 SkipPolicy explicitSkips(const RenderOptions& options) {
   SkipPolicy policy;
-  for (const std::string& name : options.skipBlocks) policy.names.push_back(intern(name));
+  for (const std::string& name : options.skip_blocks) policy.names.push_back(intern(name));
   return policy;
 }
 
@@ -101,10 +113,9 @@ auto guarded(std::string_view name, F&& body) -> decltype(body()) {
   }
 }
 
-std::string renderWith(EnvironmentImpl& env, std::string_view name, const Value& context,
+std::string renderWith(EnvironmentImpl& env, const Template& tmpl, const Value& context,
                        const SkipPolicy& policy) {
   Exec ex(env, policy);
-  const Template& tmpl = env.load(name);
   Ref<Context> ctx = newContext(ex, tmpl, contextDict(context));
   std::string out;
   out.reserve(256);
@@ -114,17 +125,20 @@ std::string renderWith(EnvironmentImpl& env, std::string_view name, const Value&
 
 }  // namespace
 
-Environment::Environment(std::vector<std::string> templateDirs,
-                         std::vector<std::string> builtinSets,
+Environment::Environment(std::vector<std::string> template_dirs,
+                         std::vector<std::string> builtin_sets,
                          std::span<const EmbeddedFile> builtins)
-    : impl_(std::make_unique<EnvironmentImpl>(std::move(templateDirs), std::move(builtinSets),
+    : impl_(std::make_unique<EnvironmentImpl>(std::move(template_dirs), std::move(builtin_sets),
                                               builtins)) {}
 
 Environment::~Environment() = default;
 
 std::string Environment::render(std::string_view name, const Value& context,
                                 const RenderOptions& options) {
-  return guarded(name, [&] { return renderWith(*impl_, name, context, explicitSkips(options)); });
+  return guarded(name, [&] {
+    SkipPolicy policy = explicitSkips(options);
+    return renderWith(*impl_, impl_->load(name), context, policy);
+  });
 }
 
 std::string Environment::renderBlock(std::string_view name, std::string_view block,
@@ -132,8 +146,9 @@ std::string Environment::renderBlock(std::string_view name, std::string_view blo
   return guarded(name, [&] {
     SkipPolicy policy = explicitSkips(options);
     policy.only = intern(block);
-    policy.scope = &impl_->reachableByAddress(impl_->load(name));
-    std::string out = renderWith(*impl_, name, context, policy);
+    const Template& tmpl = impl_->load(name);
+    policy.scope = &impl_->reachableByAddress(tmpl);
+    std::string out = renderWith(*impl_, tmpl, context, policy);
     std::string_view stripped = unicode::strip(out);
     if (stripped.empty()) return std::string();
     size_t begin = static_cast<size_t>(stripped.data() - out.data());

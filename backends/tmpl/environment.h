@@ -13,11 +13,11 @@
 #include <utility>
 #include <vector>
 
-#include "backends/tmpl/builtins.h"
-#include "backends/tmpl/call_args.h"
 #include "backends/tmpl/error.h"
+#include "backends/tmpl/filters/builtins.h"
 #include "backends/tmpl/limits.h"
-#include "backends/tmpl/value.h"
+#include "backends/tmpl/renderer/call_args.h"
+#include "backends/tmpl/values/value.h"
 #include "ir/support/embedded_file.h"
 
 namespace smachac::tmpl {
@@ -27,7 +27,7 @@ class EnvironmentImpl;
 struct RenderOptions {
   /// Blocks removed from every template of the render, with their contents, as if absent
   /// (SMACHA's SkipBlockExtension; e.g. `meta`, `upper_comments`, `spin`).
-  std::vector<std::string> skipBlocks;
+  std::vector<std::string> skip_blocks;
 };
 
 class Environment {
@@ -35,7 +35,7 @@ class Environment {
   /// `templateDirs` are searched in order before the built-in sets, which are prefixes into
   /// `builtins`, the caller's table of embedded templates (e.g. {"smach/", "smach_ros/"}):
   /// the engine knows no templates of its own.
-  Environment(std::vector<std::string> templateDirs, std::vector<std::string> builtinSets,
+  Environment(std::vector<std::string> template_dirs, std::vector<std::string> builtin_sets,
               std::span<const EmbeddedFile> builtins);
   ~Environment();
   Environment(const Environment&) = delete;

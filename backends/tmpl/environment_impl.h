@@ -10,17 +10,17 @@
 #include <utility>
 #include <vector>
 
-#include "backends/tmpl/builtins.h"
+#include "backends/tmpl/filters/builtins.h"
 #include "backends/tmpl/limits.h"
 #include "backends/tmpl/loader.h"
-#include "backends/tmpl/runtime.h"
+#include "backends/tmpl/renderer/runtime.h"
 #include "backends/tmpl/template.h"
 
 namespace smachac::tmpl {
 
 class EnvironmentImpl {
  public:
-  EnvironmentImpl(std::vector<std::string> dirs, std::vector<std::string> builtinSets,
+  EnvironmentImpl(std::vector<std::string> dirs, std::vector<std::string> builtin_sets,
                   std::span<const EmbeddedFile> builtins);
 
   /// The compiled template `name`; raises Fault if it does not exist, TemplateError if it
@@ -36,8 +36,12 @@ class EnvironmentImpl {
   ~EnvironmentImpl();
   /// Objects that cached modules or returned values may still use; their reference cycles
   /// are broken when the environment is destroyed.
-  void keep(Context* ctx) { keptContexts_.emplace_back(ctx); }
-  void keep(Frame* frame) { keptFrames_.emplace_back(frame); }
+  void keep(Context* ctx) { kept_contexts_.emplace_back(ctx); }
+  void keep(Frame* frame) { kept_frames_.emplace_back(frame); }
+  /// Cleared contexts no one else references, kept for the next render (saves allocating a
+  /// context and its tables for each of the thousands of small renders SMACHA makes).
+  Ref<Context> takeSpareContext();
+  void addSpareContext(Ref<Context> ctx);
 
   Registry& registry() { return registry_; }
   Loader& loader() { return loader_; }
@@ -49,14 +53,16 @@ class EnvironmentImpl {
   Registry registry_;
   Loader loader_;
   struct NameHash {
-    using is_transparent = void;
+    using is_transparent = void;  // NOLINT(readability-identifier-naming): the standard name
     size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
   };
   std::unordered_map<std::string, std::unique_ptr<Template>, NameHash, std::equal_to<>> templates_;
   std::unordered_map<const Template*, std::vector<const std::string*>> reachable_;
-  std::unordered_map<const Template*, std::vector<const std::string*>> reachableByAddress_;
-  std::vector<Ref<Context>> keptContexts_;
-  std::vector<Ref<Frame>> keptFrames_;
+  std::unordered_map<const Template*, std::vector<const std::string*>> reachable_by_address_;
+  std::vector<Ref<Context>> kept_contexts_;
+  std::vector<Ref<Frame>> kept_frames_;
+  static constexpr size_t kMaxSpareContexts = 8;
+  std::vector<Ref<Context>> spare_contexts_;
 };
 
 inline const Registry& registryOf(EnvironmentImpl& env) { return env.registry(); }

@@ -11,34 +11,34 @@ namespace {
 constexpr size_t kBytesPerStep = 256;
 
 const Limits kDefaultLimits{};
-thread_local const Limits* activeLimits_ = &kDefaultLimits;
-thread_local uint64_t* activeSteps_ = nullptr;
+thread_local const Limits* active_limits = &kDefaultLimits;
+thread_local uint64_t* active_steps = nullptr;
 
 }  // namespace
 
-const Limits& activeLimits() { return *activeLimits_; }
+const Limits& activeLimits() { return *active_limits; }
 
 void checkSteps(uint64_t steps) {
-  if (steps > activeLimits_->steps) {
-    fail("template execution exceeded " + std::to_string(activeLimits_->steps) + " steps");
+  if (steps > active_limits->steps) {
+    fail("template execution exceeded " + std::to_string(active_limits->steps) + " steps");
   }
 }
 
 void chargeWork(size_t bytes) {
-  if (activeSteps_ == nullptr || bytes < kBytesPerStep) return;
-  *activeSteps_ += bytes / kBytesPerStep;
-  checkSteps(*activeSteps_);
+  if (active_steps == nullptr || bytes < kBytesPerStep) return;
+  *active_steps += bytes / kBytesPerStep;
+  checkSteps(*active_steps);
 }
 
 ScopedLimits::ScopedLimits(const Limits& limits, uint64_t& steps)
-    : previousLimits_(activeLimits_), previousSteps_(activeSteps_) {
-  activeLimits_ = &limits;
-  activeSteps_ = &steps;
+    : previous_limits_(active_limits), previous_steps_(active_steps) {
+  active_limits = &limits;
+  active_steps = &steps;
 }
 
 ScopedLimits::~ScopedLimits() {
-  activeLimits_ = previousLimits_;
-  activeSteps_ = previousSteps_;
+  active_limits = previous_limits_;
+  active_steps = previous_steps_;
 }
 
 }  // namespace smachac::tmpl

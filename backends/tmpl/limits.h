@@ -12,7 +12,7 @@ namespace smachac::tmpl {
 
 struct Limits {
   uint64_t steps = 50'000'000;
-  size_t stringBytes = size_t{256} << 20;
+  size_t string_bytes = size_t{256} << 20;
   size_t items = size_t{1} << 22;
 };
 
@@ -36,8 +36,8 @@ class ScopedLimits {
   ScopedLimits& operator=(const ScopedLimits&) = delete;
 
  private:
-  const Limits* previousLimits_;
-  uint64_t* previousSteps_;
+  const Limits* previous_limits_;
+  uint64_t* previous_steps_;
 };
 
 }  // namespace smachac::tmpl

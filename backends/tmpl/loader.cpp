@@ -29,10 +29,10 @@ std::optional<std::string> normalizeTemplateName(std::string_view name) {
   return out;
 }
 
-Loader::Loader(std::vector<std::string> dirs, std::vector<std::string> builtinSets,
+Loader::Loader(std::vector<std::string> dirs, std::vector<std::string> builtin_sets,
                std::span<const EmbeddedFile> builtins)
-    : dirs_(std::move(dirs)), builtinSets_(std::move(builtinSets)) {
-  for (std::string& set : builtinSets_) {
+    : dirs_(std::move(dirs)), builtin_sets_(std::move(builtin_sets)) {
+  for (std::string& set : builtin_sets_) {
     if (!set.empty() && set.back() != '/') set += '/';
   }
   for (const EmbeddedFile& file : builtins) builtins_.emplace(std::string(file.path), file.content);
@@ -42,10 +42,10 @@ void Loader::addMemory(std::string name, std::string text) {
   memory_.insert_or_assign(std::move(name), std::move(text));
 }
 
-std::optional<TemplateSource> Loader::load(std::string_view rawName) const {
-  if (auto it = memory_.find(rawName); it != memory_.end())
+std::optional<TemplateSource> Loader::load(std::string_view raw_name) const {
+  if (auto it = memory_.find(raw_name); it != memory_.end())
     return TemplateSource{it->first, it->second};
-  std::optional<std::string> name = normalizeTemplateName(rawName);
+  std::optional<std::string> name = normalizeTemplateName(raw_name);
   if (!name) return std::nullopt;
   for (const std::string& dir : dirs_) {
     fs::path path = fs::path(dir) / *name;
@@ -57,7 +57,7 @@ std::optional<TemplateSource> Loader::load(std::string_view rawName) const {
     if (!in) fail("cannot read template file `" + path.string() + "`");
     return TemplateSource{path.lexically_normal().string(), text.str()};
   }
-  for (const std::string& set : builtinSets_) {
+  for (const std::string& set : builtin_sets_) {
     if (auto it = builtins_.find(set + *name); it != builtins_.end()) {
       return TemplateSource{"<builtin>/" + it->first, std::string(it->second)};
     }
@@ -65,15 +65,15 @@ std::optional<TemplateSource> Loader::load(std::string_view rawName) const {
   return std::nullopt;
 }
 
-bool Loader::exists(std::string_view rawName) const {
-  if (memory_.count(rawName)) return true;
-  std::optional<std::string> name = normalizeTemplateName(rawName);
+bool Loader::exists(std::string_view raw_name) const {
+  if (memory_.count(raw_name)) return true;
+  std::optional<std::string> name = normalizeTemplateName(raw_name);
   if (!name) return false;
   for (const std::string& dir : dirs_) {
     std::error_code ec;
     if (fs::is_regular_file(fs::path(dir) / *name, ec)) return true;
   }
-  return std::any_of(builtinSets_.begin(), builtinSets_.end(),
+  return std::any_of(builtin_sets_.begin(), builtin_sets_.end(),
                      [&](const std::string& set) { return builtins_.count(set + *name) > 0; });
 }
 
@@ -110,24 +110,24 @@ std::optional<std::string> Loader::resolveIn(const std::vector<std::string>& ent
   return best;
 }
 
-std::optional<std::string> Loader::resolveScriptName(std::string_view rawName) const {
-  std::optional<std::string> name = normalizeTemplateName(rawName);
+std::optional<std::string> Loader::resolveScriptName(std::string_view raw_name) const {
+  std::optional<std::string> name = normalizeTemplateName(raw_name);
   if (!name) return std::nullopt;
   size_t slash = name->rfind('/');
   std::string subdir = slash == std::string::npos ? "" : name->substr(0, slash + 1);
   std::string base = slash == std::string::npos ? *name : name->substr(slash + 1);
-  std::vector<std::string> memoryEntries;
+  std::vector<std::string> memory_entries;
   for (const auto& [n, text] : memory_) {
     if (n.compare(0, subdir.size(), subdir) == 0 &&
         n.find('/', subdir.size()) == std::string::npos) {
-      memoryEntries.push_back(n.substr(subdir.size()));
+      memory_entries.push_back(n.substr(subdir.size()));
     }
   }
-  if (auto found = resolveIn(memoryEntries, base)) return subdir + *found;
+  if (auto found = resolveIn(memory_entries, base)) return subdir + *found;
   for (const std::string& dir : dirs_) {
     if (auto found = resolveIn(listDir(dir, subdir), base)) return subdir + *found;
   }
-  for (const std::string& set : builtinSets_) {
+  for (const std::string& set : builtin_sets_) {
     std::string prefix = set + subdir;
     std::vector<std::string> entries;
     for (auto it = builtins_.lower_bound(prefix); it != builtins_.end(); ++it) {
@@ -147,7 +147,7 @@ std::string Loader::searchDescription() const {
     out += s;
   };
   for (const std::string& dir : dirs_) add("`" + dir + "`");
-  for (const std::string& set : builtinSets_) add("built-in `" + set + "`");
+  for (const std::string& set : builtin_sets_) add("built-in `" + set + "`");
   if (out.empty()) out = "no template directories";
   return out;
 }

@@ -21,7 +21,7 @@ struct TemplateSource {
 
 class Loader {
  public:
-  Loader(std::vector<std::string> dirs, std::vector<std::string> builtinSets,
+  Loader(std::vector<std::string> dirs, std::vector<std::string> builtin_sets,
          std::span<const EmbeddedFile> builtins);
 
   /// The source of the template with exactly this name, searched in order. Raises Fault if a
@@ -40,7 +40,7 @@ class Loader {
   std::vector<std::string> listDir(const std::string& dir, std::string_view subdir) const;
 
   std::vector<std::string> dirs_;
-  std::vector<std::string> builtinSets_;
+  std::vector<std::string> builtin_sets_;
   std::map<std::string, std::string_view, std::less<>> builtins_;
   std::map<std::string, std::string, std::less<>> memory_;
 };

@@ -1,9 +1,9 @@
 // Template compilation: normalise, tokenise, parse, analyse scopes.
 #include "backends/tmpl/template.h"
 
-#include "backends/tmpl/lexer.h"
-#include "backends/tmpl/parser.h"
-#include "backends/tmpl/scope.h"
+#include "backends/tmpl/ast/scope.h"
+#include "backends/tmpl/lexer/lexer.h"
+#include "backends/tmpl/parser/parser.h"
 #include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
@@ -14,11 +14,11 @@ Template::Template(std::string name, std::string origin, std::string_view source
   try {
     std::vector<Token> tokens = tokenize(source_);
     ParsedTemplate parsed = parseTemplate(source_, tokens, registry, arena_);
-    analyzeScopes(parsed, rootFrame_);
+    analyzeScopes(parsed, root_frame_);
     body_ = std::move(parsed.body);
     blocks_ = std::move(parsed.blocks);
     references_ = std::move(parsed.references);
-    hasExtends_ = parsed.hasExtends;
+    has_extends_ = parsed.has_extends;
   } catch (const SyntaxFault& fault) {
     throw error(fault.pos, fault.message);
   }
@@ -34,15 +34,15 @@ const BlockStmt* Template::block(std::string_view name) const {
 std::pair<int, int> Template::lineColumn(uint32_t pos) const {
   if (pos > source_.size()) pos = static_cast<uint32_t>(source_.size());
   int line = 1;
-  size_t lineStart = 0;
+  size_t line_start = 0;
   for (size_t i = 0; i < pos; ++i) {
     if (source_[i] == '\n') {
       ++line;
-      lineStart = i + 1;
+      line_start = i + 1;
     }
   }
   int column = 1 + static_cast<int>(unicode::length(
-                       std::string_view(source_).substr(lineStart, pos - lineStart)));
+                       std::string_view(source_).substr(line_start, pos - line_start)));
   return {line, column};
 }
 

@@ -2,24 +2,37 @@
 // statements with their scope layout, its blocks and the templates it references.
 #pragma once
 
+#include <deque>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
-#include "backends/tmpl/ast.h"
-#include "backends/tmpl/builtins.h"
+#include "backends/tmpl/ast/ast.h"
 #include "backends/tmpl/error.h"
+#include "backends/tmpl/filters/builtins.h"
 
 namespace smachac::tmpl {
+
+/// The root code of a template as one skip policy runs it: the blocks it skips left out and
+/// the texts that become adjacent merged (SMACHA renders each block with all the others
+/// skipped, so most of a root is text between skipped blocks).
+struct RootPlan {
+  Body body;
+  std::deque<std::string> texts;
+  std::deque<TextStmt> merged;
+  std::deque<Body> pieces;
+};
 
 /// Which blocks of a template one skip policy removes (a cache the renderer fills).
 struct SkipMask {
   const std::string* only;
   const void* scope;
   std::vector<const std::string*> names;
-  std::vector<char> skipped;  // by BlockStmt::index
-  Value module;               // the template's default module under this policy (imports)
+  std::vector<char> skipped;       // by BlockStmt::index
+  Value module;                    // the template's default module under this policy (imports)
+  std::unique_ptr<RootPlan> plan;  // built on the first render under this policy
 };
 
 class Template {
@@ -34,21 +47,17 @@ class Template {
   const std::string& origin() const { return origin_; }
   std::string_view source() const { return source_; }
   const Body& body() const { return body_; }
-  const FrameLayout& rootFrame() const { return rootFrame_; }
+  const FrameLayout& rootFrame() const { return root_frame_; }
   const std::vector<BlockStmt*>& blocks() const { return blocks_; }
   const BlockStmt* block(std::string_view name) const;
   /// String-literal names of the templates it extends, includes or imports, with positions.
   const std::vector<std::pair<std::string, uint32_t>>& references() const { return references_; }
-  bool hasExtends() const { return hasExtends_; }
+  bool hasExtends() const { return has_extends_; }
 
   /// 1-based line and column (in characters) of byte offset `pos`.
   std::pair<int, int> lineColumn(uint32_t pos) const;
   TemplateError error(uint32_t pos, std::string message) const;
-  std::vector<std::unique_ptr<SkipMask>>& skipMasks() const { return skipMasks_; }
-  /// A hint into skipMasks() by the policy's `only` block (index + 1, or 0).
-  uint16_t& skipMaskHint(const std::string* only) const {
-    return skipMaskHints_[(reinterpret_cast<uintptr_t>(only) >> 4) % kSkipMaskHints];
-  }
+  std::vector<std::unique_ptr<SkipMask>>& skipMasks() const { return skip_masks_; }
 
  private:
   std::string name_;
@@ -56,13 +65,11 @@ class Template {
   std::string source_;
   Arena arena_;
   Body body_;
-  FrameLayout rootFrame_;
+  FrameLayout root_frame_;
   std::vector<BlockStmt*> blocks_;
   std::vector<std::pair<std::string, uint32_t>> references_;
-  bool hasExtends_ = false;
-  static constexpr size_t kSkipMaskHints = 61;
-  mutable std::vector<std::unique_ptr<SkipMask>> skipMasks_;
-  mutable uint16_t skipMaskHints_[kSkipMaskHints] = {};
+  bool has_extends_ = false;
+  mutable std::vector<std::unique_ptr<SkipMask>> skip_masks_;
 };
 
 }  // namespace smachac::tmpl

@@ -1,4 +1,6 @@
-// The diagnostic kind table built from diagnostic_kinds.def.
+// The diagnostic kind table built from diagnostic_kinds.def, and the check, when this file is
+// compiled, that every kind's and every note's format has one field per declared argument type
+// and suits those types (also for an entry that no call uses yet).
 #include "ir/support/diagnostic.h"
 
 #include <array>
@@ -6,15 +8,28 @@
 namespace smachac {
 namespace {
 
-constexpr Severity Error = Severity::Error;
-constexpr Severity Warning = Severity::Warning;
-constexpr Severity Ignored = Severity::Ignored;
-
 constexpr DiagKindInfo kInfos[] = {
-#define SMACHAC_DIAGNOSTIC(id, name, severity, adjustable, format) \
-  {name, severity, adjustable, format},
+#define SMACHAC_DIAGNOSTIC(id, name, severity, adjustable, format, types) \
+  {name, Severity::severity, adjustable, format},
 #include "ir/support/diagnostic_kinds.def"
 };
+
+/// True when `format` has one field per type of `Kind`'s signature, and fmt accepts it for them.
+template <auto Kind>
+constexpr bool formatSuitsTypes() {
+  using Signature = DiagSignatureOf<Kind>;
+  return formatFieldCount(diagFormat(Kind)) == Signature::kCount &&
+         Signature::checks([] { return diagFormat(Kind); });
+}
+
+#define SMACHAC_DIAGNOSTIC(id, name, severity, adjustable, format, types) \
+  static_assert(formatSuitsTypes<DiagKind::id>(),                         \
+                "diagnostic_kinds.def: the format of " #id " does not suit its types");
+#include "ir/support/diagnostic_kinds.def"
+#define SMACHAC_DIAGNOSTIC_NOTE(id, format, types)    \
+  static_assert(formatSuitsTypes<DiagNoteKind::id>(), \
+                "diagnostic_notes.def: the format of " #id " does not suit its types");
+#include "ir/support/diagnostic_notes.def"
 
 }  // namespace
 

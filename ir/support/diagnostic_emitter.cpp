@@ -14,9 +14,9 @@ void DiagnosticEmitter::report(DiagKind kind, SourceLoc loc, std::string message
   diagnostics_.push_back({kind, severity, loc, std::move(message), {}, std::nullopt});
 }
 
-void DiagnosticEmitter::note(SourceLoc loc, std::string message) {
+void DiagnosticEmitter::attach(DiagNote note) {
   if (last_dropped_ || diagnostics_.empty()) return;
-  diagnostics_.back().notes.push_back({loc, std::move(message)});
+  diagnostics_.back().notes.push_back(std::move(note));
 }
 
 void DiagnosticEmitter::fixIt(std::optional<std::string> replacement) {

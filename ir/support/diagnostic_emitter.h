@@ -1,11 +1,9 @@
 // The one channel for problems in the user's input. Checks call emit<Kind>() with a kind from
-// diagnostic_kinds.def and the arguments of its message, which fmt checks against the kind's
-// format when the call is compiled (a wrong count or an unformattable argument does not
-// build); the emitter applies -W options and collects the diagnostics for a
-// DiagnosticPrinter.
+// diagnostic_kinds.def and the arguments of its message, then note<Note>() with a note from
+// diagnostic_notes.def and its arguments; both are checked against the types the .def entry
+// declares when the call is compiled (a wrong count or type does not build). The emitter
+// applies -W options and collects the diagnostics for a DiagnosticPrinter.
 #pragma once
-
-#include <fmt/core.h>
 
 #include <optional>
 #include <string>
@@ -22,14 +20,14 @@ class DiagnosticEmitter {
 
   template <DiagKind Kind, typename... Args>
   void emit(SourceLoc loc, const Args&... args) {
-    static_assert(sizeof...(Args) == formatFieldCount(diagKindFormat(Kind)),
-                  "the arguments of a diagnostic must match its message's {} fields");
-    report(Kind, loc,
-           fmt::format(fmt::format_string<const Args&...>(diagKindFormat(Kind)), args...));
+    report(Kind, loc, diagMessage<Kind>(args...));
   }
 
   /// Attaches a note to the diagnostic emitted last (dropped if that one was silenced).
-  void note(SourceLoc loc, std::string message);
+  template <DiagNoteKind Note, typename... Args>
+  void note(SourceLoc loc, const Args&... args) {
+    if (!last_dropped_) attach(makeNote<Note>(loc, args...));
+  }
   /// Gives the diagnostic emitted last a fix-it, the replacement of its span (Diagnostic::fix);
   /// nothing when `replacement` is empty or that diagnostic was silenced.
   void fixIt(std::optional<std::string> replacement);
@@ -44,6 +42,7 @@ class DiagnosticEmitter {
 
  private:
   void report(DiagKind kind, SourceLoc loc, std::string message);
+  void attach(DiagNote note);
 
   WarningOptions options_;
   std::vector<Diagnostic> diagnostics_;

@@ -189,14 +189,14 @@ std::string capitalize(std::string_view s) {
 std::string title(std::string_view s) {
   std::string out;
   std::u32string cps = decodeAll(s);
-  bool previousCased = false;
+  bool previous_cased = false;
   for (size_t i = 0; i < cps.size(); ++i) {
-    if (previousCased) {
+    if (previous_cased) {
       appendLower(out, cps, i);
     } else {
       appendMapped(out, tableToTitle(), cps[i]);
     }
-    previousCased = isCased(cps[i]);
+    previous_cased = isCased(cps[i]);
   }
   return out;
 }
@@ -217,7 +217,7 @@ std::string swapcase(std::string_view s) {
 }
 
 std::string_view strip(std::string_view s, bool left, bool right) {
-  auto asciiSpace = [](unsigned char c) {
+  auto ascii_space = [](unsigned char c) {
     return (c >= 0x09 && c <= 0x0D) || (c >= 0x1C && c <= 0x20);
   };
   size_t begin = 0;
@@ -225,7 +225,7 @@ std::string_view strip(std::string_view s, bool left, bool right) {
   while (left && begin < end) {
     auto c = static_cast<unsigned char>(s[begin]);
     if (c < 0x80) {
-      if (!asciiSpace(c)) break;
+      if (!ascii_space(c)) break;
       ++begin;
       continue;
     }
@@ -236,7 +236,7 @@ std::string_view strip(std::string_view s, bool left, bool right) {
   while (right && end > begin) {
     auto c = static_cast<unsigned char>(s[end - 1]);
     if (c < 0x80) {
-      if (!asciiSpace(c)) break;
+      if (!ascii_space(c)) break;
       --end;
       continue;
     }

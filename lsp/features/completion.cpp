@@ -40,11 +40,11 @@ std::string insertText(const Candidate& candidate, const YamlContext& context,
   return insert;
 }
 
-Json itemJson(const Candidate& candidate, size_t index, const Range& range, std::string newText) {
+Json itemJson(const Candidate& candidate, size_t index, const Range& range, std::string new_text) {
   Json item = {{"label", candidate.label},
                {"kind", static_cast<int>(candidate.kind)},
                {"sortText", fmt::format("{:04}", index)},
-               {"textEdit", {{"range", toJson(range)}, {"newText", std::move(newText)}}}};
+               {"textEdit", {{"range", toJson(range)}, {"newText", std::move(new_text)}}}};
   if (!candidate.detail.empty()) item["detail"] = candidate.detail;
   if (!candidate.documentation.empty()) item["documentation"] = candidate.documentation;
   return item;

@@ -1,8 +1,8 @@
 // Templates and their meta blocks, as completion shows them.
 #include "lsp/features/completion_templates.h"
 
-#include "backends/template_help.h"
-#include "backends/tmpl/value_print.h"
+#include "backends/meta/template_help.h"
+#include "backends/tmpl/values/value_print.h"
 
 namespace smachac::lsp {
 namespace {

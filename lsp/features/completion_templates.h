@@ -3,7 +3,7 @@
 // completion: a one-line summary, the kind of template (`type`: Base, State, Container...;
 // `None` for helpers that scripts do not name), the variables and the outcomes. A template
 // without a meta block (a user's) is known by its name only. The search path and the
-// environment are backends/template_help.h's, as `smachac help` and hover use them.
+// environment are backends/meta/template_help.h's, as `smachac help` and hover use them.
 #pragma once
 
 #include <memory>
@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "backends/template_help.h"
+#include "backends/meta/template_help.h"
 #include "backends/tmpl/environment.h"
 
 namespace smachac::lsp {

@@ -1,5 +1,5 @@
 // textDocument/hover: markdown about the name under the position, with its range.
-//   * a template: its documentation, as `smachac help` gives it (backends/template_help.h);
+//   * a template: its documentation, as `smachac help` gives it (backends/meta/template_help.h);
 //   * a state: what it is, its template, its outcomes (its template's when it declares
 //     none) and the sub-script it comes from;
 //   * a userdata key: its type in its scope (passes/analysis/key_types.h), its value when a
@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "backends/template_help.h"
+#include "backends/meta/template_help.h"
 #include "ir/type.h"
 #include "ir/value_text.h"
 #include "lsp/features/definition.h"

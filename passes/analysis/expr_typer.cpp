@@ -105,8 +105,7 @@ ir::Type ExprTyper::unknownName(const ir::ExprNode& node) {
   bool in_scope = state_->parent.valid() && key_types_.find(state_->parent, node.name);
   if (is_output || in_scope) {
     diags_.emit<DiagKind::ExprKeyNotInput>(node.loc, node.name, state_->name.text);
-    diags_.note(node.loc,
-                fmt::format("add `{}` to the `input_keys` of `{}`", node.name, state_->name.text));
+    diags_.note<DiagNoteKind::AddInputKey>(node.loc, node.name, state_->name.text);
     return ir::Type::any();
   }
   std::vector<std::string> candidates;

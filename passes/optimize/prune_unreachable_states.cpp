@@ -40,20 +40,20 @@ void setUserdata(ir::State& container, ir::Argument entry) {
 /// Moves the effective userdata of the children that are not `reachable` to the container.
 void hoistUserdata(ir::Module& module, ir::State& container,
                    const std::vector<uint8_t>& reachable) {
-  auto inScope = [&](uint32_t i) {
+  auto in_scope = [&](uint32_t i) {
     return !ir::isContainer(module.state(container.children[i]).kind);
   };
   std::unordered_map<std::string, uint32_t> last;  // key -> last defining child
   for (const ir::Argument& entry : container.userdata) last[entry.key.text] = kContainer;
   for (uint32_t i = 0; i < container.children.size(); ++i) {
-    if (!inScope(i)) continue;
+    if (!in_scope(i)) continue;
     for (const ir::Argument& entry : module.state(container.children[i]).userdata) {
       last[entry.key.text] = i;
     }
   }
   std::unordered_set<std::string> hoisted;
   for (uint32_t i = 0; i < container.children.size(); ++i) {
-    if (reachable[i] || !inScope(i)) continue;
+    if (reachable[i] || !in_scope(i)) continue;
     for (ir::Argument& entry : module.state(container.children[i]).userdata) {
       if (last[entry.key.text] != i) continue;
       hoisted.insert(entry.key.text);
@@ -62,7 +62,7 @@ void hoistUserdata(ir::Module& module, ir::State& container,
   }
   if (hoisted.empty()) return;
   for (uint32_t i = 0; i < container.children.size(); ++i) {
-    if (!reachable[i] || !inScope(i)) continue;
+    if (!reachable[i] || !in_scope(i)) continue;
     std::erase_if(module.state(container.children[i]).userdata,
                   [&](const ir::Argument& entry) { return hoisted.contains(entry.key.text); });
   }

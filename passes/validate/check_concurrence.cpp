@@ -218,8 +218,8 @@ class ConcurrenceChecker {
         diags_.emit<DiagKind::ConcurrentWrite>(write.scope_name->loc, childName(module_, c_, child),
                                                childName(module_, c_, it->second.first),
                                                scope.keyName(write.key), c_.name.text);
-        diags_.note(it->second.second->scope_name->loc,
-                    "`" + childName(module_, c_, it->second.first) + "` writes it here");
+        diags_.note<DiagNoteKind::StateWritesKeyHere>(it->second.second->scope_name->loc,
+                                                      childName(module_, c_, it->second.first));
       }
     }
   }

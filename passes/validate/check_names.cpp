@@ -56,7 +56,7 @@ class NameChecker {
       if (!inserted) {
         diags_.emit<DiagKind::DuplicateStateName>(child.name.loc, container.name.text,
                                                   child.name.text);
-        diags_.note(it->second->name.loc, "the first state named so is here");
+        diags_.note<DiagNoteKind::FirstStateNamedSo>(it->second->name.loc);
       }
       if (outcomes.contains(child.name.text)) {
         diags_.emit<DiagKind::StateNamedLikeOutcome>(child.name.loc, child.name.text,

@@ -87,9 +87,8 @@ class FlowChecker {
   void noteParentHasKey(const KeyUse& read) {
     if (!parent_keys_ || !parent_keys_->contains(read.scope_name->text)) return;
     const std::string& parent = module_.state(container_.parent).name.text;
-    diags_.note(container_.name.loc,
-                fmt::format("`{}` has `{}`: list it in the `input_keys` of `{}` to copy it in",
-                            parent, read.scope_name->text, container_.name.text));
+    diags_.note<DiagNoteKind::ParentHasKey>(container_.name.loc, parent, read.scope_name->text,
+                                            container_.name.text);
   }
 
   /// In a Concurrence, a key that only children write is undefined when they start: maybe
@@ -124,9 +123,8 @@ class FlowChecker {
     if (parent_keys_ && parent_keys_->contains(read.scope_name->text)) {
       noteParentHasKey(read);
     } else if (auto writer = scope_.firstWriter(read.key)) {
-      diags_.note(
-          writer->second->scope_name->loc,
-          fmt::format("`{}` writes it here", childName(module_, container_, writer->first)));
+      diags_.note<DiagNoteKind::StateWritesKeyHere>(writer->second->scope_name->loc,
+                                                    childName(module_, container_, writer->first));
     }
   }
 

@@ -98,7 +98,7 @@ class TypeChecker {
     std::string as = outer.name == key ? "" : fmt::format(" (as `{}`)", outer.name);
     diags_.emit<DiagKind::UserdataTypeMismatch>(inner.loc, key, inner.type.str(), outer.type.str(),
                                                 outer.scope, as);
-    diags_.note(outer.loc, fmt::format("`{}` is set here", outer.name));
+    diags_.note<DiagNoteKind::KeySetHere>(outer.loc, outer.name);
   }
 
   const ir::Module& module_;

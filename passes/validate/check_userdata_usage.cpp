@@ -39,7 +39,7 @@ class UsageChecker {
       if (!previous || ir::sameValue(previous->arg->value, def.arg->value)) continue;
       diags_.emit<DiagKind::OverwrittenUserdata>(previous->arg->key.loc, def.arg->key.text,
                                                  definer(def.child), container_.name.text);
-      diags_.note(def.arg->key.loc, "it is set again here");
+      diags_.note<DiagNoteKind::KeySetAgainHere>(def.arg->key.loc);
     }
   }
 

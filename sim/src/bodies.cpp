@@ -13,7 +13,7 @@ namespace smachac::sim {
 namespace {
 
 // The address of a body's free joint in qpos and qvel, or {-1, -1}.
-auto freeJointAddress(const mjModel* model, int body) -> std::pair<int, int> {
+std::pair<int, int> freeJointAddress(const mjModel* model, int body) {
   if (model->body_jntnum[body] != 1) return {-1, -1};
   const int joint = model->body_jntadr[body];
   if (model->jnt_type[joint] != mjJNT_FREE) return {-1, -1};
@@ -39,23 +39,23 @@ void writeMocap(mjData* data, int mocap, const Pose& pose) {
 
 }  // namespace
 
-auto placeBody(World& world, std::string_view name, const Pose& pose, Frame frame) -> PlaceStatus {
+PlaceStatus placeBody(World& world, std::string_view name, const Pose& pose, Frame frame) {
   const mjModel* model = world.model();
   const int body = detail::objectId(model, mjOBJ_BODY, std::string(name));
-  if (body < 0) return PlaceStatus::kUnknownBody;
-  if (!detail::isValidPose(pose)) return PlaceStatus::kInvalidPose;
+  if (body < 0) return PlaceStatus::UnknownBody;
+  if (!detail::isValidPose(pose)) return PlaceStatus::InvalidPose;
   const Pose target = world.toWorld(detail::normalized(pose), frame);
   const auto address = freeJointAddress(model, body);
   const int mocap = model->body_mocapid[body];
-  if (address.first < 0 && mocap < 0) return PlaceStatus::kNotMovable;
+  if (address.first < 0 && mocap < 0) return PlaceStatus::NotMovable;
   auto guard = world.lock();
   if (address.first >= 0) writeFree(world.data(), address, target);
   if (mocap >= 0) writeMocap(world.data(), mocap, target);
   mj_forward(model, world.data());
-  return PlaceStatus::kPlaced;
+  return PlaceStatus::Placed;
 }
 
-auto bodyPose(const World& world, std::string_view name, Frame frame) -> std::optional<Pose> {
+std::optional<Pose> bodyPose(const World& world, std::string_view name, Frame frame) {
   const mjModel* model = world.model();
   const int body = detail::objectId(model, mjOBJ_BODY, std::string(name));
   if (body < 0) return std::nullopt;

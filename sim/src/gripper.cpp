@@ -17,7 +17,7 @@ constexpr double kSettledSpeed = 2e-3;  // m/s: a finger slower than this has st
 constexpr int kSettledSteps = 25;       // consecutive slow steps that count as settled
 
 // The bodies a pad geom touches.
-auto touchedBodies(const mjModel* model, const mjData* data, int pad) -> std::set<int> {
+std::set<int> touchedBodies(const mjModel* model, const mjData* data, int pad) {
   std::set<int> bodies;
   for (int i = 0; i < data->ncon; ++i) {
     const mjContact& contact = data->contact[i];
@@ -27,7 +27,7 @@ auto touchedBodies(const mjModel* model, const mjData* data, int pad) -> std::se
   return bodies;
 }
 
-auto isFreeBody(const mjModel* model, int body) -> bool {
+bool isFreeBody(const mjModel* model, int body) {
   return model->body_jntnum[body] == 1 && model->jnt_type[model->body_jntadr[body]] == mjJNT_FREE;
 }
 
@@ -37,13 +37,13 @@ Gripper::Gripper(World& world, Side side) : world_(world), side_(side) {
   const mjModel* model = world_.model();
   for (int f = 0; f < 2; ++f) {
     const int joint = detail::objectId(model, mjOBJ_JOINT, detail::fingerJointName(side, f));
-    fingerQpos_[f] = model->jnt_qposadr[joint];
-    fingerDof_[f] = model->jnt_dofadr[joint];
+    finger_qpos_[f] = model->jnt_qposadr[joint];
+    finger_dof_[f] = model->jnt_dofadr[joint];
     actuator_[f] = detail::objectId(model, mjOBJ_ACTUATOR, detail::fingerActuatorName(side, f));
     pad_[f] = detail::objectId(model, mjOBJ_GEOM, detail::padGeomName(side, f));
     // Open is the end of the range away from zero (l: upper, r: lower); closed is zero.
     const double* range = model->jnt_range + 2 * joint;
-    openCommand_[f] = std::abs(range[1]) > std::abs(range[0]) ? range[1] : range[0];
+    open_command_[f] = std::abs(range[1]) > std::abs(range[0]) ? range[1] : range[0];
   }
 }
 
@@ -58,18 +58,18 @@ void Gripper::commandOpening(double fraction) {
 
 void Gripper::applyControl() {
   mjData* data = world_.data();
-  for (int f = 0; f < 2; ++f) data->ctrl[actuator_[f]] = opening_ * openCommand_[f];
+  for (int f = 0; f < 2; ++f) data->ctrl[actuator_[f]] = opening_ * open_command_[f];
 }
 
-auto Gripper::opening() const -> double {
+double Gripper::opening() const {
   auto guard = world_.lock();
   const mjData* data = world_.data();
   double sum = 0.0;
-  for (int f = 0; f < 2; ++f) sum += data->qpos[fingerQpos_[f]] / openCommand_[f];
+  for (int f = 0; f < 2; ++f) sum += data->qpos[finger_qpos_[f]] / open_command_[f];
   return std::clamp(sum / 2.0, 0.0, 1.0);
 }
 
-auto Gripper::fingerForce() const -> double {
+double Gripper::fingerForce() const {
   auto guard = world_.lock();
   const mjData* data = world_.data();
   return (std::abs(data->actuator_force[actuator_[0]]) +
@@ -77,51 +77,51 @@ auto Gripper::fingerForce() const -> double {
          2.0;
 }
 
-auto Gripper::moving() const -> bool {
+bool Gripper::moving() const {
   auto guard = world_.lock();
   return fingerSpeed() >= kSettledSpeed;
 }
 
-auto Gripper::fingerSpeed() const -> double {
+double Gripper::fingerSpeed() const {
   const mjData* data = world_.data();
-  return std::max(std::abs(data->qvel[fingerDof_[0]]), std::abs(data->qvel[fingerDof_[1]]));
+  return std::max(std::abs(data->qvel[finger_dof_[0]]), std::abs(data->qvel[finger_dof_[1]]));
 }
 
-auto Gripper::waitSettled(const GripperOptions& options) -> bool {
-  int slowSteps = 0;
+bool Gripper::waitSettled(const GripperOptions& options) {
+  int slow_steps = 0;
   return world_.stepUntil(
       [&] {
-        slowSteps = fingerSpeed() < kSettledSpeed ? slowSteps + 1 : 0;
-        return slowSteps > kSettledSteps;
+        slow_steps = fingerSpeed() < kSettledSpeed ? slow_steps + 1 : 0;
+        return slow_steps > kSettledSteps;
       },
       options.timeout);
 }
 
-auto Gripper::open(const GripperOptions& options) -> GripperResult {
+GripperResult Gripper::open(const GripperOptions& options) {
   commandOpen();
   return resultAfter(waitSettled(options), false);
 }
 
-auto Gripper::close(const GripperOptions& options) -> GripperResult {
+GripperResult Gripper::close(const GripperOptions& options) {
   commandClose();
   return resultAfter(waitSettled(options), true);
 }
 
-auto Gripper::resultAfter(bool settled, bool closing) const -> GripperResult {
+GripperResult Gripper::resultAfter(bool settled, bool closing) const {
   GripperResult result;
   result.gap = gap();
   if (!settled) return result;
   if (!closing) {
-    result.status = GripperStatus::kOpened;
+    result.status = GripperStatus::Opened;
     return result;
   }
   const auto held = heldBody();
-  result.status = held ? GripperStatus::kGrasped : GripperStatus::kClosedEmpty;
-  result.heldBody = held.value_or("");
+  result.status = held ? GripperStatus::Grasped : GripperStatus::ClosedEmpty;
+  result.held_body = held.value_or("");
   return result;
 }
 
-auto Gripper::gap() const -> double {
+double Gripper::gap() const {
   auto guard = world_.lock();
   const mjModel* model = world_.model();
   const mjData* data = world_.data();
@@ -133,7 +133,7 @@ auto Gripper::gap() const -> double {
   return std::abs(across) - model->geom_size[3 * pad_[0] + 1] - model->geom_size[3 * pad_[1] + 1];
 }
 
-auto Gripper::heldBody() const -> std::optional<std::string> {
+std::optional<std::string> Gripper::heldBody() const {
   auto guard = world_.lock();
   const mjModel* model = world_.model();
   const std::set<int> left = touchedBodies(model, world_.data(), pad_[0]);

@@ -30,7 +30,7 @@ struct ArmIndex {
   std::array<int, kArmJointCount> dof{};
 };
 
-auto armIndex(const mjModel* model, Side side) -> ArmIndex {
+ArmIndex armIndex(const mjModel* model, Side side) {
   ArmIndex arm;
   arm.site = detail::objectId(model, mjOBJ_SITE, detail::tcpSiteName(side));
   for (int i = 0; i < kArmJointCount; ++i) {
@@ -52,18 +52,18 @@ class DlsRun {
         jacp_(static_cast<size_t>(3 * model->nv)),
         jacr_(static_cast<size_t>(3 * model->nv)) {}
 
-  auto run(const Pose& target, JointPositions q, const IkOptions& options, IkResult& out) -> bool {
-    const Eigen::Vector3d targetPosition = detail::toEigen(target.position);
-    const Eigen::Quaterniond targetOrientation = detail::toEigen(target.orientation);
-    for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
+  bool run(const Pose& target, JointPositions q, const IkOptions& options, IkResult& out) {
+    const Eigen::Vector3d target_position = detail::toEigen(target.position);
+    const Eigen::Quaterniond target_orientation = detail::toEigen(target.orientation);
+    for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
       setJoints(q);
-      const Vector6 error = poseError(targetPosition, targetOrientation);
+      const Vector6 error = poseError(target_position, target_orientation);
       out.joints = q;
-      out.positionError = error.head<3>().norm();
-      out.orientationError = error.tail<3>().norm();
+      out.position_error = error.head<3>().norm();
+      out.orientation_error = error.tail<3>().norm();
       ++out.iterations;
-      if (out.positionError <= options.positionTolerance &&
-          out.orientationError <= options.orientationTolerance) {
+      if (out.position_error <= options.position_tolerance &&
+          out.orientation_error <= options.orientation_tolerance) {
         return true;
       }
       q = clampToLimits(addStep(q, dampedStep(error, options)));
@@ -78,8 +78,7 @@ class DlsRun {
   }
 
  private:
-  auto poseError(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) const
-      -> Vector6 {
+  Vector6 poseError(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) const {
     const Pose current =
         detail::poseFromMujoco(data_->site_xpos + 3 * arm_.site, data_->site_xmat + 9 * arm_.site);
     Vector6 error;
@@ -88,7 +87,7 @@ class DlsRun {
     return error;
   }
 
-  auto dampedStep(const Vector6& error, const IkOptions& options) -> Vector7 {
+  Vector7 dampedStep(const Vector6& error, const IkOptions& options) {
     mj_jacSite(model_, data_, jacp_.data(), jacr_.data(), arm_.site);
     Matrix6x7 jacobian;
     for (int c = 0; c < kArmJointCount; ++c) {
@@ -103,16 +102,16 @@ class DlsRun {
         jacobian * jacobian.transpose() + lambda2 * Eigen::Matrix<double, 6, 6>::Identity();
     Vector7 step = jacobian.transpose() * jjt.ldlt().solve(error);
     const double largest = step.cwiseAbs().maxCoeff();
-    if (largest > options.maxStep) step *= options.maxStep / largest;
+    if (largest > options.max_step) step *= options.max_step / largest;
     return step;
   }
 
-  static auto addStep(JointPositions q, const Vector7& step) -> JointPositions {
+  static JointPositions addStep(JointPositions q, const Vector7& step) {
     for (size_t i = 0; i < q.size(); ++i) q[i] += step(static_cast<Eigen::Index>(i));
     return q;
   }
 
-  auto clampToLimits(JointPositions q) const -> JointPositions {
+  JointPositions clampToLimits(JointPositions q) const {
     for (size_t i = 0; i < q.size(); ++i) {
       q[i] = std::clamp(q[i], limb_.lowerLimits()[i], limb_.upperLimits()[i]);
     }
@@ -142,43 +141,43 @@ Ik::Ik(const World& world) : world_(world), scratch_(mj_makeData(world.model()))
 
 Ik::~Ik() { mj_deleteData(scratch_); }
 
-auto Ik::seedsFor(Side side) const -> std::vector<JointPositions> {
+std::vector<JointPositions> Ik::seedsFor(Side side) const {
   std::vector<JointPositions> seeds = {world_.limb(side).jointPositions(), untuckPose(side),
                                        neutralPose(side)};
   for (const JointPositions& left : kExtraLeftSeeds) {
-    seeds.push_back(side == Side::kLeft ? left : mirrorPose(left));
+    seeds.push_back(side == Side::Left ? left : mirrorPose(left));
   }
   return seeds;
 }
 
-auto Ik::solve(Side side, const Pose& target, Frame frame, const IkOptions& options) -> IkResult {
-  if (!detail::isValidPose(target)) return {.status = IkStatus::kInvalidTarget};
+IkResult Ik::solve(Side side, const Pose& target, Frame frame, const IkOptions& options) {
+  if (!detail::isValidPose(target)) return {.status = IkStatus::InvalidTarget};
   const std::vector<JointPositions> seeds = seedsFor(side);
   return solveFromSeeds(side, world_.toWorld(detail::normalized(target), frame), seeds, options);
 }
 
-auto Ik::solveFromSeeds(Side side, const Pose& worldTarget, std::span<const JointPositions> seeds,
-                        const IkOptions& options) -> IkResult {
-  if (!detail::isValidPose(worldTarget)) return {.status = IkStatus::kInvalidTarget};
-  const Pose target = detail::normalized(worldTarget);
+IkResult Ik::solveFromSeeds(Side side, const Pose& world_target,
+                            std::span<const JointPositions> seeds, const IkOptions& options) {
+  if (!detail::isValidPose(world_target)) return {.status = IkStatus::InvalidTarget};
+  const Pose target = detail::normalized(world_target);
   const ArmIndex arm = armIndex(world_.model(), side);
   DlsRun solver(world_.model(), scratch_, arm, world_.limb(side));
   IkResult best;
-  best.positionError = std::numeric_limits<double>::infinity();
+  best.position_error = std::numeric_limits<double>::infinity();
   int iterations = 0;
   for (const JointPositions& seed : seeds) {
     IkResult attempt;
     const bool solved = solver.run(target, seed, options, attempt);
     iterations += attempt.iterations;
-    if (solved) attempt.status = IkStatus::kSolved;
-    if (solved || attempt.positionError < best.positionError) best = attempt;
+    if (solved) attempt.status = IkStatus::Solved;
+    if (solved || attempt.position_error < best.position_error) best = attempt;
     if (solved) break;
   }
   best.iterations = iterations;
   return best;
 }
 
-auto Ik::forward(Side side, const JointPositions& joints) -> Pose {
+Pose Ik::forward(Side side, const JointPositions& joints) {
   const ArmIndex arm = armIndex(world_.model(), side);
   DlsRun solver(world_.model(), scratch_, arm, world_.limb(side));
   solver.setJoints(joints);

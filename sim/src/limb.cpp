@@ -25,13 +25,13 @@ constexpr double kStreamRampTime = 0.6;
 constexpr double kStreamTimeConstant = 0.05;
 
 // Minimum-jerk profile: position fraction and its time derivative (per unit duration).
-auto quintic(double s) -> std::pair<double, double> {
+std::pair<double, double> quintic(double s) {
   s = std::clamp(s, 0.0, 1.0);
   const double s3 = s * s * s;
   return {s3 * (10.0 - 15.0 * s + 6.0 * s * s), 30.0 * s * s * (1.0 - 2.0 * s + s * s)};
 }
 
-auto index(int i) -> size_t { return static_cast<size_t>(i); }
+size_t index(int i) { return static_cast<size_t>(i); }
 
 }  // namespace
 
@@ -41,39 +41,39 @@ Limb::Limb(World& world, Side side) : world_(world), side_(side) {
     const std::string name = detail::armJointName(side, i);
     const int joint = detail::objectId(model, mjOBJ_JOINT, name);
     actuator_[index(i)] = detail::objectId(model, mjOBJ_ACTUATOR, name);
-    qposAddress_[index(i)] = model->jnt_qposadr[joint];
-    dofAddress_[index(i)] = model->jnt_dofadr[joint];
+    qpos_address_[index(i)] = model->jnt_qposadr[joint];
+    dof_address_[index(i)] = model->jnt_dofadr[joint];
     lower_[index(i)] = model->jnt_range[2 * joint];
     upper_[index(i)] = model->jnt_range[2 * joint + 1];
-    velocityLimit_[index(i)] = kVelocityLimits[index(i)];
+    velocity_limit_[index(i)] = kVelocityLimits[index(i)];
     const int a = actuator_[index(i)];
-    leadTime_[index(i)] =
+    lead_time_[index(i)] =
         -model->actuator_biasprm[a * mjNBIAS + 2] / model->actuator_gainprm[a * mjNGAIN];
   }
   site_ = detail::objectId(model, mjOBJ_SITE, detail::tcpSiteName(side));
 }
 
-auto Limb::jointNames() const -> std::array<std::string, kArmJointCount> {
+std::array<std::string, kArmJointCount> Limb::jointNames() const {
   std::array<std::string, kArmJointCount> names;
   for (int i = 0; i < kArmJointCount; ++i) names[index(i)] = detail::armJointName(side_, i);
   return names;
 }
 
-auto Limb::jointPositions() const -> JointPositions {
+JointPositions Limb::jointPositions() const {
   auto guard = world_.lock();
   JointPositions q{};
-  for (size_t i = 0; i < q.size(); ++i) q[i] = world_.data()->qpos[qposAddress_[i]];
+  for (size_t i = 0; i < q.size(); ++i) q[i] = world_.data()->qpos[qpos_address_[i]];
   return q;
 }
 
-auto Limb::jointVelocities() const -> JointPositions {
+JointPositions Limb::jointVelocities() const {
   auto guard = world_.lock();
   JointPositions v{};
-  for (size_t i = 0; i < v.size(); ++i) v[i] = world_.data()->qvel[dofAddress_[i]];
+  for (size_t i = 0; i < v.size(); ++i) v[i] = world_.data()->qvel[dof_address_[i]];
   return v;
 }
 
-auto Limb::endpointPose(Frame frame) const -> Pose {
+Pose Limb::endpointPose(Frame frame) const {
   auto guard = world_.lock();
   const mjData* data = world_.data();
   const Pose world =
@@ -81,7 +81,7 @@ auto Limb::endpointPose(Frame frame) const -> Pose {
   return world_.fromWorld(world, frame);
 }
 
-auto Limb::validGoal(const JointPositions& goal) const -> bool {
+bool Limb::validGoal(const JointPositions& goal) const {
   for (size_t i = 0; i < goal.size(); ++i) {
     if (!std::isfinite(goal[i])) return false;
     if (goal[i] < lower_[i] - kLimitSlack || goal[i] > upper_[i] + kLimitSlack) return false;
@@ -89,52 +89,52 @@ auto Limb::validGoal(const JointPositions& goal) const -> bool {
   return true;
 }
 
-auto Limb::moveDuration(const JointPositions& from, const JointPositions& to, double speed) const
-    -> double {
+double Limb::moveDuration(const JointPositions& from, const JointPositions& to,
+                          double speed) const {
   double duration = kShortestMove;
   const double fraction = std::clamp(speed, 0.01, 1.0);
   for (size_t i = 0; i < from.size(); ++i) {
-    const double needed = kQuinticPeak * std::abs(to[i] - from[i]) / (fraction * velocityLimit_[i]);
+    const double needed =
+        kQuinticPeak * std::abs(to[i] - from[i]) / (fraction * velocity_limit_[i]);
     duration = std::max(duration, needed);
   }
   return duration;
 }
 
-auto Limb::startMove(const JointPositions& goal, const MoveOptions& options) -> bool {
+bool Limb::startMove(const JointPositions& goal, const MoveOptions& options) {
   if (!validGoal(goal)) return false;
   auto guard = world_.lock();
   start_ = jointPositions();
   for (size_t i = 0; i < goal.size(); ++i) goal_[i] = std::clamp(goal[i], lower_[i], upper_[i]);
-  startTime_ = world_.time();
-  endTime_ = startTime_ + moveDuration(start_, goal_, options.speed);
+  start_time_ = world_.time();
+  end_time_ = start_time_ + moveDuration(start_, goal_, options.speed);
   tolerance_ = options.tolerance;
   streaming_ = false;
   return true;
 }
 
-auto Limb::moveError() const -> double {
+double Limb::moveError() const {
   const JointPositions q = jointPositions();
   double error = 0.0;
   for (size_t i = 0; i < q.size(); ++i) error = std::max(error, std::abs(goal_[i] - q[i]));
   return error;
 }
 
-auto Limb::moveDone() const -> bool {
+bool Limb::moveDone() const {
   auto guard = world_.lock();
-  return world_.time() >= endTime_ && moveError() <= tolerance_;
+  return world_.time() >= end_time_ && moveError() <= tolerance_;
 }
 
-auto Limb::moveToJointPositions(const JointPositions& goal, const MoveOptions& options)
-    -> MoveResult {
+MoveResult Limb::moveToJointPositions(const JointPositions& goal, const MoveOptions& options) {
   MoveResult result;
   if (!startMove(goal, options)) {
-    result.status = MoveStatus::kInvalidTarget;
+    result.status = MoveStatus::InvalidTarget;
     return result;
   }
   const double begin = world_.time();
   const bool reached = world_.stepUntil([this] { return moveDone(); }, options.timeout);
-  result.status = reached ? MoveStatus::kReached : MoveStatus::kTimeout;
-  result.maxError = moveError();
+  result.status = reached ? MoveStatus::Reached : MoveStatus::Timeout;
+  result.max_error = moveError();
   result.duration = world_.time() - begin;
   return result;
 }
@@ -142,51 +142,51 @@ auto Limb::moveToJointPositions(const JointPositions& goal, const MoveOptions& o
 void Limb::holdCurrent() {
   auto guard = world_.lock();
   start_ = goal_ = jointPositions();
-  startTime_ = endTime_ = world_.time();
+  start_time_ = end_time_ = world_.time();
   streaming_ = false;
 }
 
-auto Limb::commandPositions(const JointPositions& goal, double speed) -> bool {
+bool Limb::commandPositions(const JointPositions& goal, double speed) {
   if (!validGoal(goal) || !std::isfinite(speed)) return false;
   auto guard = world_.lock();
   if (!streaming_) {
-    streamTarget_ = jointPositions();
-    streamVelocity_ = {};
-    streamTime_ = world_.time();
+    stream_target_ = jointPositions();
+    stream_velocity_ = {};
+    stream_time_ = world_.time();
   }
   for (size_t i = 0; i < goal.size(); ++i) goal_[i] = std::clamp(goal[i], lower_[i], upper_[i]);
-  streamSpeed_ = std::clamp(speed, 0.01, 1.0);
+  stream_speed_ = std::clamp(speed, 0.01, 1.0);
   streaming_ = true;
   return true;
 }
 
 void Limb::applyStreamControl(double time) {
-  const double dt = std::max(0.0, time - streamTime_);
-  streamTime_ = time;
+  const double dt = std::max(0.0, time - stream_time_);
+  stream_time_ = time;
   mjData* data = world_.data();
   for (size_t i = 0; i < goal_.size(); ++i) {
-    const double limit = streamSpeed_ * velocityLimit_[i];
+    const double limit = stream_speed_ * velocity_limit_[i];
     const double acceleration = limit / kStreamRampTime;
-    const double error = goal_[i] - streamTarget_[i];
+    const double error = goal_[i] - stream_target_[i];
     const double stoppable = std::min(limit, std::sqrt(2.0 * acceleration * std::abs(error)));
     const double wanted = std::clamp(error / kStreamTimeConstant, -stoppable, stoppable);
     const double ramp = acceleration * dt;
-    streamVelocity_[i] += std::clamp(wanted - streamVelocity_[i], -ramp, ramp);
-    streamTarget_[i] += streamVelocity_[i] * dt;
-    data->ctrl[actuator_[i]] = streamTarget_[i] + leadTime_[i] * streamVelocity_[i];
+    stream_velocity_[i] += std::clamp(wanted - stream_velocity_[i], -ramp, ramp);
+    stream_target_[i] += stream_velocity_[i] * dt;
+    data->ctrl[actuator_[i]] = stream_target_[i] + lead_time_[i] * stream_velocity_[i];
   }
 }
 
 void Limb::applyControl(double time) {
   if (streaming_) return applyStreamControl(time);
-  const double duration = endTime_ - startTime_;
-  const double s = duration > 0.0 ? (time - startTime_) / duration : 1.0;
+  const double duration = end_time_ - start_time_;
+  const double s = duration > 0.0 ? (time - start_time_) / duration : 1.0;
   const auto [fraction, rate] = quintic(s);
   mjData* data = world_.data();
   for (size_t i = 0; i < goal_.size(); ++i) {
     const double delta = goal_[i] - start_[i];
     const double velocity = s < 1.0 && duration > 0.0 ? delta * rate / duration : 0.0;
-    data->ctrl[actuator_[i]] = start_[i] + delta * fraction + leadTime_[i] * velocity;
+    data->ctrl[actuator_[i]] = start_[i] + delta * fraction + lead_time_[i] * velocity;
   }
 }
 

@@ -9,12 +9,12 @@
 
 namespace smachac::sim {
 
-auto modelDirectory() -> std::string {
-  const char* fromEnvironment = std::getenv("SMACHAC_SIM_MODEL_DIR");
-  if (fromEnvironment != nullptr && *fromEnvironment != '\0') return fromEnvironment;
+std::string modelDirectory() {
+  const char* from_environment = std::getenv("SMACHAC_SIM_MODEL_DIR");
+  if (from_environment != nullptr && *from_environment != '\0') return from_environment;
   return SMACHAC_SIM_MODEL_DIR_DEFAULT;
 }
 
-auto defaultScenePath() -> std::string { return modelDirectory() + "/scene.xml"; }
+std::string defaultScenePath() { return modelDirectory() + "/scene.xml"; }
 
 }  // namespace smachac::sim

@@ -12,11 +12,11 @@
 namespace smachac::sim {
 namespace {
 
-std::mutex messagesMutex;
+std::mutex messages_mutex;
 std::vector<std::string> messages;  // NOLINT: process-wide, as MuJoCo's hook is
 
 void collectWarning(const char* text) {
-  std::lock_guard lock(messagesMutex);
+  std::lock_guard lock(messages_mutex);
   messages.emplace_back(text);
 }
 
@@ -31,8 +31,8 @@ void installMujocoMessageHook() {
 
 }  // namespace detail
 
-auto takeMujocoMessages() -> std::vector<std::string> {
-  std::lock_guard lock(messagesMutex);
+std::vector<std::string> takeMujocoMessages() {
+  std::lock_guard lock(messages_mutex);
   return std::exchange(messages, {});
 }
 

@@ -7,7 +7,7 @@
 
 namespace smachac::sim {
 
-auto writePngFile(const std::string& path, const Image& image) -> std::string {
+std::string writePngFile(const std::string& path, const Image& image) {
   const size_t expected = static_cast<size_t>(image.width) * static_cast<size_t>(image.height) * 3;
   if (image.width <= 0 || image.height <= 0 || image.rgb.size() != expected) {
     return "image has no pixels or a wrong size";

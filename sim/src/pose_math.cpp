@@ -5,17 +5,15 @@
 
 namespace smachac::sim::detail {
 
-auto toEigen(const Vec3& v) -> Eigen::Vector3d { return {v.x, v.y, v.z}; }
+Eigen::Vector3d toEigen(const Vec3& v) { return {v.x, v.y, v.z}; }
 
-auto toEigen(const Quaternion& q) -> Eigen::Quaterniond { return {q.w, q.x, q.y, q.z}; }
+Eigen::Quaterniond toEigen(const Quaternion& q) { return {q.w, q.x, q.y, q.z}; }
 
-auto toVec3(const Eigen::Vector3d& v) -> Vec3 { return {v.x(), v.y(), v.z()}; }
+Vec3 toVec3(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-auto toQuaternion(const Eigen::Quaterniond& q) -> Quaternion {
-  return {q.w(), q.x(), q.y(), q.z()};
-}
+Quaternion toQuaternion(const Eigen::Quaterniond& q) { return {q.w(), q.x(), q.y(), q.z()}; }
 
-auto poseFromMujoco(const double* position, const double* matrix) -> Pose {
+Pose poseFromMujoco(const double* position, const double* matrix) {
   Eigen::Matrix3d rotation;
   rotation << matrix[0], matrix[1], matrix[2], matrix[3], matrix[4], matrix[5], matrix[6],
       matrix[7], matrix[8];
@@ -24,18 +22,18 @@ auto poseFromMujoco(const double* position, const double* matrix) -> Pose {
   return {{position[0], position[1], position[2]}, toQuaternion(q.normalized())};
 }
 
-auto compose(const Pose& a, const Pose& b) -> Pose {
+Pose compose(const Pose& a, const Pose& b) {
   const Eigen::Quaterniond qa = toEigen(a.orientation);
   const Eigen::Vector3d p = toEigen(a.position) + qa * toEigen(b.position);
   return {toVec3(p), toQuaternion((qa * toEigen(b.orientation)).normalized())};
 }
 
-auto inverse(const Pose& pose) -> Pose {
+Pose inverse(const Pose& pose) {
   const Eigen::Quaterniond qi = toEigen(pose.orientation).conjugate();
   return {toVec3(-(qi * toEigen(pose.position))), toQuaternion(qi)};
 }
 
-auto isValidPose(const Pose& pose) -> bool {
+bool isValidPose(const Pose& pose) {
   const double values[] = {pose.position.x,    pose.position.y,    pose.position.z,
                            pose.orientation.w, pose.orientation.x, pose.orientation.y,
                            pose.orientation.z};
@@ -45,16 +43,16 @@ auto isValidPose(const Pose& pose) -> bool {
   return toEigen(pose.orientation).norm() > 1e-6;
 }
 
-auto normalized(const Pose& pose) -> Pose {
+Pose normalized(const Pose& pose) {
   return {pose.position, toQuaternion(toEigen(pose.orientation).normalized())};
 }
 
-auto orientationError(const Eigen::Quaterniond& target, const Eigen::Quaterniond& current)
-    -> Eigen::Vector3d {
+Eigen::Vector3d orientationError(const Eigen::Quaterniond& target,
+                                 const Eigen::Quaterniond& current) {
   Eigen::Quaterniond delta = target * current.conjugate();
   if (delta.w() < 0) delta.coeffs() = -delta.coeffs();
-  const Eigen::AngleAxisd axisAngle(delta.normalized());
-  return axisAngle.axis() * axisAngle.angle();
+  const Eigen::AngleAxisd axis_angle(delta.normalized());
+  return axis_angle.axis() * axis_angle.angle();
 }
 
 }  // namespace smachac::sim::detail

@@ -8,25 +8,25 @@
 
 namespace smachac::sim::detail {
 
-auto toEigen(const Vec3& v) -> Eigen::Vector3d;
-auto toEigen(const Quaternion& q) -> Eigen::Quaterniond;
-auto toVec3(const Eigen::Vector3d& v) -> Vec3;
-auto toQuaternion(const Eigen::Quaterniond& q) -> Quaternion;
+Eigen::Vector3d toEigen(const Vec3& v);
+Eigen::Quaterniond toEigen(const Quaternion& q);
+Vec3 toVec3(const Eigen::Vector3d& v);
+Quaternion toQuaternion(const Eigen::Quaterniond& q);
 
 /// Pose from a MuJoCo position (3) and rotation matrix (9, row-major).
-auto poseFromMujoco(const double* position, const double* matrix) -> Pose;
+Pose poseFromMujoco(const double* position, const double* matrix);
 
 /// a * b: b expressed in a's parent frame.
-auto compose(const Pose& a, const Pose& b) -> Pose;
-auto inverse(const Pose& pose) -> Pose;
+Pose compose(const Pose& a, const Pose& b);
+Pose inverse(const Pose& pose);
 
 /// True when every value is finite and the quaternion is not (near) zero.
-auto isValidPose(const Pose& pose) -> bool;
+bool isValidPose(const Pose& pose);
 /// The same pose with a unit quaternion.
-auto normalized(const Pose& pose) -> Pose;
+Pose normalized(const Pose& pose);
 
 /// Rotation vector (axis * angle, world frame) that turns `current` into `target`.
-auto orientationError(const Eigen::Quaterniond& target, const Eigen::Quaterniond& current)
-    -> Eigen::Vector3d;
+Eigen::Vector3d orientationError(const Eigen::Quaterniond& target,
+                                 const Eigen::Quaterniond& current);
 
 }  // namespace smachac::sim::detail

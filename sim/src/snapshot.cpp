@@ -29,11 +29,11 @@ struct Snapshotter::Renderer {
     OSMesaDestroyContext(context);
   }
 
-  auto makeCurrent() -> bool {
+  bool makeCurrent() {
     return OSMesaMakeCurrent(context, framebuffer.data(), GL_UNSIGNED_BYTE, width, height) != 0;
   }
 
-  auto create(const mjModel* model, std::string& error) -> bool {
+  bool create(const mjModel* model, std::string& error) {
     width = model->vis.global.offwidth;
     height = model->vis.global.offheight;
     context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
@@ -58,8 +58,7 @@ struct Snapshotter::Renderer {
 
 namespace {
 
-auto makeCamera(const mjModel* model, const SnapshotOptions& options, mjvCamera& camera)
-    -> std::string {
+std::string makeCamera(const mjModel* model, const SnapshotOptions& options, mjvCamera& camera) {
   mjv_defaultCamera(&camera);
   if (!options.camera.empty()) {
     camera.type = mjCAMERA_FIXED;
@@ -92,8 +91,7 @@ Snapshotter::Snapshotter(World& world) : world_(world) {}
 
 Snapshotter::~Snapshotter() = default;
 
-auto Snapshotter::capture(const SnapshotOptions& options, Image& image, std::string& error)
-    -> bool {
+bool Snapshotter::capture(const SnapshotOptions& options, Image& image, std::string& error) {
   image = {};
   const mjModel* model = world_.model();
   if (options.width <= 0 || options.height <= 0 || options.width > model->vis.global.offwidth ||
@@ -128,8 +126,7 @@ auto Snapshotter::capture(const SnapshotOptions& options, Image& image, std::str
   return true;
 }
 
-auto Snapshotter::writePng(const std::string& path, const SnapshotOptions& options)
-    -> SnapshotResult {
+SnapshotResult Snapshotter::writePng(const std::string& path, const SnapshotOptions& options) {
   Image image;
   SnapshotResult result;
   if (!capture(options, image, result.error)) return result;

@@ -25,10 +25,10 @@ constexpr std::array<const char*, mjNWARNING> kWarningNames = {
     "mjWARN_INERTIA", "mjWARN_CONTACTFULL", "mjWARN_CNSTRFULL", "mjWARN_VGEOMFULL",
     "mjWARN_BADQPOS", "mjWARN_BADQVEL",     "mjWARN_BADQACC",   "mjWARN_BADCTRL"};
 
-auto sideIndex(Side side) -> int { return side == Side::kLeft ? 0 : 1; }
+int sideIndex(Side side) { return side == Side::Left ? 0 : 1; }
 
 // Every degree of freedom that does not belong to a free joint: the robot's.
-auto robotDofs(const mjModel* model) -> std::vector<int> {
+std::vector<int> robotDofs(const mjModel* model) {
   std::vector<int> dofs;
   for (int j = 0; j < model->njnt; ++j) {
     if (model->jnt_type[j] == mjJNT_FREE || model->jnt_type[j] == mjJNT_BALL) continue;
@@ -37,7 +37,7 @@ auto robotDofs(const mjModel* model) -> std::vector<int> {
   return dofs;
 }
 
-auto loadModel(const std::string& path, std::string& error) -> mjModel* {
+mjModel* loadModel(const std::string& path, std::string& error) {
   std::array<char, 1024> message{};
   mjModel* model = mj_loadXML(path.c_str(), nullptr, message.data(), message.size());
   if (model == nullptr) error = "cannot load `" + path + "`: " + message.data();
@@ -46,14 +46,14 @@ auto loadModel(const std::string& path, std::string& error) -> mjModel* {
 
 }  // namespace
 
-auto World::load(const std::string& scenePath) -> LoadResult {
+LoadResult World::load(const std::string& scene_path) {
   detail::installMujocoMessageHook();
   LoadResult result;
-  mjModel* model = loadModel(scenePath, result.error);
+  mjModel* model = loadModel(scene_path, result.error);
   if (model == nullptr) return result;
   result.error = detail::checkRobotNames(model);
   if (!result.error.empty()) {
-    result.error = "`" + scenePath + "`: " + result.error;
+    result.error = "`" + scene_path + "`: " + result.error;
     mj_deleteModel(model);
     return result;
   }
@@ -61,17 +61,17 @@ auto World::load(const std::string& scenePath) -> LoadResult {
   return result;
 }
 
-auto World::loadDefault() -> LoadResult { return load(defaultScenePath()); }
+LoadResult World::loadDefault() { return load(defaultScenePath()); }
 
 World::World(mjModel* model, mjData* data) : model_(model), data_(data) {
-  for (Side side : {Side::kLeft, Side::kRight}) {
+  for (Side side : {Side::Left, Side::Right}) {
     limbs_[sideIndex(side)] = std::make_unique<Limb>(*this, side);
     grippers_[sideIndex(side)] = std::make_unique<Gripper>(*this, side);
   }
-  robotDofs_ = robotDofs(model_);
+  robot_dofs_ = robotDofs(model_);
   const int base = detail::objectId(model_, mjOBJ_BODY, detail::kBaseBody);
   mj_forward(model_, data_);
-  basePose_ = detail::poseFromMujoco(data_->xpos + 3 * base, data_->xmat + 9 * base);
+  base_pose_ = detail::poseFromMujoco(data_->xpos + 3 * base, data_->xmat + 9 * base);
   reset();
 }
 
@@ -93,12 +93,12 @@ void World::step(int count) {
   auto guard = lock();
   const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i < count; ++i) stepLocked();
-  wallSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  wall_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void World::stepFor(double seconds) { step(static_cast<int>(std::lround(seconds / timestep()))); }
 
-auto World::stepUntil(const std::function<bool()>& done, double timeout) -> bool {
+bool World::stepUntil(const std::function<bool()>& done, double timeout) {
   const double deadline = time() + timeout;
   for (;;) {
     auto guard = lock();
@@ -114,26 +114,26 @@ void World::stepLocked() {
   for (auto& gripper : grippers_) gripper->applyControl();
   applyGravityCompensation();
   mj_step2(model_, data_);
-  simSeconds_ += model_->opt.timestep;
+  sim_seconds_ += model_->opt.timestep;
 }
 
 void World::applyGravityCompensation() {
-  for (int dof : robotDofs_) data_->qfrc_applied[dof] = data_->qfrc_bias[dof];
+  for (int dof : robot_dofs_) data_->qfrc_applied[dof] = data_->qfrc_bias[dof];
 }
 
-auto World::time() const -> double {
+double World::time() const {
   auto guard = lock();
   return data_->time;
 }
 
-auto World::timestep() const -> double { return model_->opt.timestep; }
+double World::timestep() const { return model_->opt.timestep; }
 
-auto World::limb(Side side) -> Limb& { return *limbs_[sideIndex(side)]; }
-auto World::limb(Side side) const -> const Limb& { return *limbs_[sideIndex(side)]; }
-auto World::gripper(Side side) -> Gripper& { return *grippers_[sideIndex(side)]; }
-auto World::gripper(Side side) const -> const Gripper& { return *grippers_[sideIndex(side)]; }
+Limb& World::limb(Side side) { return *limbs_[sideIndex(side)]; }
+const Limb& World::limb(Side side) const { return *limbs_[sideIndex(side)]; }
+Gripper& World::gripper(Side side) { return *grippers_[sideIndex(side)]; }
+const Gripper& World::gripper(Side side) const { return *grippers_[sideIndex(side)]; }
 
-auto World::warnings() const -> std::vector<WarningCount> {
+std::vector<WarningCount> World::warnings() const {
   auto guard = lock();
   std::vector<WarningCount> raised;
   for (int i = 0; i < mjNWARNING; ++i) {
@@ -143,33 +143,31 @@ auto World::warnings() const -> std::vector<WarningCount> {
   return raised;
 }
 
-auto World::hasWarnings() const -> bool { return !warnings().empty(); }
+bool World::hasWarnings() const { return !warnings().empty(); }
 
-auto World::realTimeFactor() const -> double {
+double World::realTimeFactor() const {
   auto guard = lock();
-  return wallSeconds_ > 0.0 ? simSeconds_ / wallSeconds_ : 0.0;
+  return wall_seconds_ > 0.0 ? sim_seconds_ / wall_seconds_ : 0.0;
 }
 
 void World::resetTiming() {
   auto guard = lock();
-  wallSeconds_ = 0.0;
-  simSeconds_ = 0.0;
+  wall_seconds_ = 0.0;
+  sim_seconds_ = 0.0;
 }
 
-auto World::toWorld(const Pose& pose, Frame frame) const -> Pose {
-  return frame == Frame::kWorld ? pose : detail::compose(basePose_, pose);
+Pose World::toWorld(const Pose& pose, Frame frame) const {
+  return frame == Frame::World ? pose : detail::compose(base_pose_, pose);
 }
 
-auto World::fromWorld(const Pose& pose, Frame frame) const -> Pose {
-  return frame == Frame::kWorld ? pose : detail::compose(detail::inverse(basePose_), pose);
+Pose World::fromWorld(const Pose& pose, Frame frame) const {
+  return frame == Frame::World ? pose : detail::compose(detail::inverse(base_pose_), pose);
 }
 
-auto World::model() const -> const mjModel* { return model_; }
-auto World::data() -> mjData* { return data_; }
-auto World::data() const -> const mjData* { return data_; }
+const mjModel* World::model() const { return model_; }
+mjData* World::data() { return data_; }
+const mjData* World::data() const { return data_; }
 
-auto World::lock() const -> std::unique_lock<std::recursive_mutex> {
-  return std::unique_lock(mutex_);
-}
+std::unique_lock<std::recursive_mutex> World::lock() const { return std::unique_lock(mutex_); }
 
 }  // namespace smachac::sim

@@ -75,7 +75,7 @@ def cpp_shorthands(source_dir):
 
 def cpp_root_keys(source_dir):
     text = open(os.path.join(source_dir, "frontend/root_keys.cpp"), encoding="utf-8").read()
-    m = re.search(r"knownRootKeys\(\)\s*\{.*?keys\s*=\s*\{(.*?)\};", text, re.S)
+    m = re.search(r"knownRootKeys\(\)\s*\{.*?kKeys\s*=\s*\{(.*?)\};", text, re.S)
     if not m:
         raise SystemExit("schema_test: knownRootKeys not found in frontend/root_keys.cpp")
     return set(re.findall(r'"([^"]+)"', m.group(1)))

@@ -9,9 +9,9 @@
 #include <sstream>
 #include <string>
 
+#include "backends/meta/template_check.h"
 #include "backends/target_code_check.h"
 #include "backends/targets.h"
-#include "backends/template_check.h"
 #include "frontend/lower.h"
 #include "ir/support/diagnostic_printer.h"
 #include "passes/pipeline.h"

@@ -25,11 +25,11 @@ using smachac::lsp::Json;
 constexpr const char* kUri = "file:///nonexistent-smachac-fuzz/doc.yml";
 
 const std::vector<std::string>& requestMethods() {
-  static const std::vector<std::string> methods = {
+  static const std::vector<std::string> kMethods = {
 #define SMACHAC_LSP_REQUEST(method, function) method,
 #include "lsp/requests.def"
   };
-  return methods;
+  return kMethods;
 }
 
 /// Reads the fuzzer's bytes as small numbers and texts; zeros past the end.
@@ -181,8 +181,8 @@ bool useTemporaryCache() {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static const bool cache_ready = useTemporaryCache();
-  (void)cache_ready;
+  static const bool kCacheReady = useTemporaryCache();
+  (void)kCacheReady;
   if (size == 0) return 0;
   if (data[0] % 2 == 0) {
     serve(std::string(reinterpret_cast<const char*>(data + 1), size - 1));

@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "backends/tmpl/environment.h"
-#include "backends/tmpl/value_convert.h"
+#include "backends/tmpl/values/value_convert.h"
 #include "templates/builtin_templates.h"
 
 namespace {
@@ -25,7 +25,7 @@ constexpr std::string_view kContextMarker = "\n%%context\n";
 /// Small bounds, so that runaway templates fail in milliseconds: the defaults (50M steps,
 /// 256 MiB strings) are bounded too, but take seconds under the sanitizers.
 constexpr smachac::tmpl::Limits kFuzzLimits{
-    .steps = 20'000, .stringBytes = 64 << 10, .items = 4096};
+    .steps = 20'000, .string_bytes = 64 << 10, .items = 4096};
 
 /// Templates around the fuzzed one: each reaches `main.tpl` or itself in a different way.
 constexpr std::pair<const char*, const char*> kFixedTemplates[] = {
@@ -84,9 +84,9 @@ void addExtensions(Environment& env) {
 }
 
 void exercise(Environment& env, const Value& context) {
-  RenderOptions skipMeta{{"meta"}};
+  RenderOptions skip_meta{{"meta"}};
   attempt([&] { env.render("main.tpl", context); });
-  attempt([&] { env.render("main.tpl", context, skipMeta); });
+  attempt([&] { env.render("main.tpl", context, skip_meta); });
   attempt([&] {
     size_t rendered = 0;
     for (const std::string& block : env.listBlocks("main.tpl")) {

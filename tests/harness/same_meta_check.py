@@ -36,7 +36,7 @@ FIELDS = ("name", "variables", "input_keys", "output_keys", "outcomes")
 CORE_CONCEPTS = ["PrintUserdataState", "RandomOutcomeState", "CallbacksState",
                  "ConditionalOutcomeState", "DeleteFileState", "WriteCSVFileState",
                  "SleepState", "LogState"]
-# Where each target's compiler looks a template up, in order (backends/template_check.cpp).
+# Where each target's compiler looks a template up, in order (backends/meta/template_check.cpp).
 TARGET_SETS = {"smach": ["smach", "smach_ros"], "flexbe": ["flexbe"], "cpp": ["cpp"]}
 SUFFIXES = (".tpl.py", ".tpl.cpp")
 # Templates that are one target's own on purpose, and why none is an alias of a concept.
@@ -54,7 +54,7 @@ NOT_STATES = (None, "None", "Base", "Container")
 
 def variables(entries):
     """{name: (status, type)} from a meta `variables` list, read as the compiler reads it
-    (backends/template_meta.cpp): a mapping entry is required, a list of one entry optional,
+    (backends/meta/template_meta.cpp): a mapping entry is required, a list of one entry optional,
     a list of several entries alternatives (one of them required); `{heading: [...]}` is a
     group of entries."""
     out = {}

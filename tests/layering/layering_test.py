@@ -2,7 +2,7 @@
 """The component graph: every #include and every link between the project's libraries goes
 down the graph below, never up or sideways (label lint).
 
-  layering_test.py REPO_ROOT LINKS_JSON
+  layering_test.py REPO_ROOT LINKS_JSON INCLUDE_DIRS_JSON
 
 ALLOWED is the one written form of the graph (the README's architecture picture draws it).
 An #include "x/y.h" belongs to the component whose folder holds x/y.h (the longest match);
@@ -11,6 +11,10 @@ simulation and the robot states. LINKS_JSON ({target: [linked targets]}) is writ
 at configure time (tests/layering/CMakeLists.txt) from each library's LINK_LIBRARIES.
 A component may use itself and what ALLOWED lists for it; tests and benchmarks may use
 everything. Prints every edge that is not allowed and exits 1 if there is one.
+
+The build holds each library to the headers of what it links (tools/cmake/include_root.cmake),
+so an include sideways fails to compile unless the link is there too; this test keeps the
+links themselves on the graph, and names the two components of an edge that is not allowed.
 """
 import json
 import os
@@ -107,12 +111,39 @@ def link_violations(links):
     return found
 
 
+def include_dir_violations(root, include_dirs):
+    """A library may compile with its own include root (include_roots/<library>), folders
+    inside its own component folder, and folders outside the sources; never with a folder of
+    the sources that reaches other components' headers (the repository root, say)."""
+    found = []
+    root = os.path.realpath(root)
+    for target, folders in sorted(include_dirs.items()):
+        component = TARGETS.get(target)
+        for folder in filter(None, folders):  # "": an install-only generator expression
+            path = os.path.realpath(folder)
+            if "/include_roots/" in folder:
+                if not folder.rstrip("/").endswith("/include_roots/" + target):
+                    found.append("%s compiles with another library's include root %s" %
+                                 (target, folder))
+                continue
+            inside = os.path.relpath(path, root)
+            if inside.startswith("..") or component is None:
+                continue
+            if inside != component and not inside.startswith(component + "/"):
+                found.append("%s compiles with %s, outside its folder %s (each library "
+                             "exports only its own include root)" % (target, folder, component))
+    return found
+
+
 def main():
-    root, links_json = sys.argv[1], sys.argv[2]
+    root, links_json, include_dirs_json = sys.argv[1], sys.argv[2], sys.argv[3]
     with open(links_json, encoding="utf-8") as f:
         links = json.load(f)
+    with open(include_dirs_json, encoding="utf-8") as f:
+        include_dirs = json.load(f)
     missing = sorted(t for t in links if t not in TARGETS)
     problems = include_violations(root) + link_violations(links)
+    problems += include_dir_violations(root, include_dirs)
     problems += ["%s: a library the graph does not know" % t for t in missing]
     for problem in problems:
         print("FAIL " + problem)

@@ -19,7 +19,7 @@
 namespace smachac::robot::test {
 namespace {
 
-auto runMachine(rt::StateMachine& sm) -> rt::RunResult {
+rt::RunResult runMachine(rt::StateMachine& sm) {
   rt::RunResult result = rt::run(sm);
   INFO(result.error);
   REQUIRE(result.ok());
@@ -39,7 +39,7 @@ void checkStacked(const SceneReport& report, const char* upper, const char* lowe
   CHECK(report.stack.stacked);
 }
 
-auto distance(const sim::Vec3& a, const sim::Vec3& b) -> double {
+double distance(const sim::Vec3& a, const sim::Vec3& b) {
   return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z);
 }
 
@@ -54,7 +54,7 @@ class SimTimeSink : public rt::TraceSink {
     auto& [start, end] = intervals_[std::string(event.state)];
     (event.kind == rt::TraceKind::Enter ? start : end) = now;
   }
-  auto interval(const std::string& state) -> std::pair<double, double> {
+  std::pair<double, double> interval(const std::string& state) {
     std::lock_guard lock(mutex_);
     return intervals_.at(state);
   }
@@ -66,7 +66,7 @@ class SimTimeSink : public rt::TraceSink {
 };
 
 // Index of the first trace line equal to `line` (lines() is "enter X", "exit X outcome", ...).
-auto lineIndex(const std::vector<std::string>& lines, const std::string& line) -> std::ptrdiff_t {
+std::ptrdiff_t lineIndex(const std::vector<std::string>& lines, const std::string& line) {
   return std::find(lines.begin(), lines.end(), line) - lines.begin();
 }
 
@@ -83,7 +83,7 @@ TEST_SUITE("sim_robot_pick_and_place") {
     const sim::Vec3 placed = sim::bodyPose(robot->world(), "block1")->position;
     INFO("block1 at " << placed.x << " " << placed.y << " " << placed.z);
     CHECK(distance(placed, {0.75, 0.0, -0.13}) < 0.01);
-    CHECK_FALSE(robot->world().gripper(sim::Side::kLeft).heldBody().has_value());
+    CHECK_FALSE(robot->world().gripper(sim::Side::Left).heldBody().has_value());
     checkNoWarnings(report);
     const auto lines = trace->lines();
     CHECK(lineIndex(lines, "exit PICK_BLOCK/CLOSE_GRIPPER succeeded") <
@@ -158,8 +158,11 @@ TEST_SUITE("sim_robot_dual_arm") {
     // The picks ran at once in simulated time: simulated time waits for both of the
     // Concurrence's threads from its split, however late the OS starts the second one, so
     // both picks start at the same simulated time and the shorter lies within the longer.
-    const auto [start1, end1] = times->interval("PICK_BLOCKS/PICK_BLOCK_1");
-    const auto [start2, end2] = times->interval("PICK_BLOCKS/PICK_BLOCK_2");
+    // Plain names, not structured bindings: doctest's INFO captures them in a lambda.
+    const std::pair<double, double> pick1 = times->interval("PICK_BLOCKS/PICK_BLOCK_1");
+    const std::pair<double, double> pick2 = times->interval("PICK_BLOCKS/PICK_BLOCK_2");
+    const double start1 = pick1.first, end1 = pick1.second;
+    const double start2 = pick2.first, end2 = pick2.second;
     INFO("PICK_BLOCK_1 " << start1 << " to " << end1 << " s, PICK_BLOCK_2 " << start2 << " to "
                          << end2 << " s");
     CHECK(std::abs(start1 - start2) < 0.01);

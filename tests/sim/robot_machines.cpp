@@ -16,11 +16,11 @@ const rt::List kLeftStart = {-0.08, -1.0, -1.19, 1.94, 0.67, 1.03, -0.5};
 const rt::List kRightStart = {0.08, -1.0, 1.19, 1.94, -0.67, 1.03, 0.5};
 
 // [[x, y, z], [qx, qy, qz, qw]], as the scripts write poses.
-auto pose(double x, double y, double z, const rt::List& rotation) -> rt::Value {
+rt::Value pose(double x, double y, double z, const rt::List& rotation) {
   return rt::List{rt::List{x, y, z}, rotation};
 }
 
-auto hoverOffset() -> rt::Value { return pose(0.0, 0.0, 0.15, {0.0, 0.0, 0.0, 0.0}); }
+rt::Value hoverOffset() { return pose(0.0, 0.0, 0.15, {0.0, 0.0, 0.0, 0.0}); }
 
 // LOAD_TABLE_MODEL, the same in all three scripts.
 void addLoadTableModel(rt::StateMachine& sm, RobotContext& robot, const std::string& next) {
@@ -112,7 +112,7 @@ void addStackBlocks(rt::StateMachine& parent, RobotContext& robot) {
 
 }  // namespace
 
-auto makeRobot(RobotOptions options) -> std::unique_ptr<RobotContext> {
+std::unique_ptr<RobotContext> makeRobot(RobotOptions options) {
   sim::LoadResult loaded = sim::World::loadDefault();
   INFO(loaded.error);
   REQUIRE(loaded.world != nullptr);
@@ -120,7 +120,7 @@ auto makeRobot(RobotOptions options) -> std::unique_ptr<RobotContext> {
   return std::make_unique<RobotContext>(std::move(loaded.world), std::move(options));
 }
 
-auto buildPickAndPlace(RobotContext& robot) -> std::unique_ptr<rt::StateMachine> {
+std::unique_ptr<rt::StateMachine> buildPickAndPlace(RobotContext& robot) {
   auto sm = std::make_unique<rt::StateMachine>(rt::StateMachineSpec{
       .outcomes = kOutcomes, .userdata = {{"limb", "left"}, {"hover_offset", hoverOffset()}}});
   addLoadTableModel(*sm, robot, "LOAD_BLOCK_MODEL");
@@ -149,7 +149,7 @@ void setBlockPlacement(rt::StateMachine& sm, int n, double x, double y) {
   sm.userdata().set(block + "_pick_pose", pose(x, y, -0.129, kGripperDown));
 }
 
-auto buildStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine> {
+std::unique_ptr<rt::StateMachine> buildStacking(RobotContext& robot) {
   auto sm = std::make_unique<rt::StateMachine>(rt::StateMachineSpec{
       .outcomes = kOutcomes, .userdata = {{"limb", "left"}, {"hover_offset", hoverOffset()}}});
   addLoadTableModel(*sm, robot, "LOAD_BLOCK_MODEL_1");
@@ -163,7 +163,7 @@ auto buildStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine> {
   return sm;
 }
 
-auto buildDualArmStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine> {
+std::unique_ptr<rt::StateMachine> buildDualArmStacking(RobotContext& robot) {
   auto sm = std::make_unique<rt::StateMachine>(
       rt::StateMachineSpec{.outcomes = kOutcomes,
                            .userdata = {{"block_1_limb", "left"},

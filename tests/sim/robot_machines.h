@@ -15,14 +15,14 @@ namespace smachac::robot::test {
 namespace rt = smachac::runtime;
 
 /// A context over a freshly loaded default scene; its log is kept but not printed.
-auto makeRobot(RobotOptions options = {}) -> std::unique_ptr<RobotContext>;
+std::unique_ptr<RobotContext> makeRobot(RobotOptions options = {});
 
 /// examples/baxter/pick_and_place.yml
-auto buildPickAndPlace(RobotContext& robot) -> std::unique_ptr<rt::StateMachine>;
+std::unique_ptr<rt::StateMachine> buildPickAndPlace(RobotContext& robot);
 /// examples/baxter/stacking.yml
-auto buildStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine>;
+std::unique_ptr<rt::StateMachine> buildStacking(RobotContext& robot);
 /// examples/baxter/dual_arm_stacking.yml
-auto buildDualArmStacking(RobotContext& robot) -> std::unique_ptr<rt::StateMachine>;
+std::unique_ptr<rt::StateMachine> buildDualArmStacking(RobotContext& robot);
 
 /// Puts block <n> of a stacking or dual-arm machine at (x, y) on the table: the userdata its
 /// LOAD_BLOCK_MODEL_<n> state loads it from, and the pick pose that follows it.

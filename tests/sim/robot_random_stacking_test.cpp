@@ -23,7 +23,7 @@ struct Placement {
   double x1, y1, x2, y2;
 };
 
-auto drawPlacement(std::mt19937& random) -> Placement {
+Placement drawPlacement(std::mt19937& random) {
   std::uniform_real_distribution<double> offset(-kSpread, kSpread);
   for (;;) {
     const Placement p{0.7 + offset(random), 0.15 + offset(random), 0.8 + offset(random),

@@ -19,24 +19,24 @@ namespace {
 const rt::List kGripperDown = {-0.02496, 0.99965, 0.00738, 0.00486};
 
 // A machine around one state: the state's outcomes end the machine.
-auto wrap(std::unique_ptr<rt::State> state, rt::Map userdata = {}, rt::Remapping remapping = {})
-    -> std::unique_ptr<rt::StateMachine> {
+std::unique_ptr<rt::StateMachine> wrap(std::unique_ptr<rt::State> state, rt::Map userdata = {},
+                                       rt::Remapping remapping = {}) {
   auto sm = std::make_unique<rt::StateMachine>(rt::StateMachineSpec{
       .outcomes = {"succeeded", "aborted", "preempted"}, .userdata = std::move(userdata)});
   sm->add("STATE", std::move(state), {}, std::move(remapping));
   return sm;
 }
 
-auto outcomeOf(rt::StateMachine& sm) -> std::string {
+std::string outcomeOf(rt::StateMachine& sm) {
   const rt::RunResult result = rt::run(sm);
   INFO(result.error);
   REQUIRE(result.ok());
   return result.outcome;
 }
 
-auto joints(const sim::JointPositions& q) -> rt::Value { return jointsValue(q); }
+rt::Value joints(const sim::JointPositions& q) { return jointsValue(q); }
 
-auto maxError(const sim::JointPositions& a, const sim::JointPositions& b) -> double {
+double maxError(const sim::JointPositions& a, const sim::JointPositions& b) {
   double error = 0.0;
   for (size_t i = 0; i < a.size(); ++i) error = std::max(error, std::abs(a[i] - b[i]));
   return error;
@@ -66,7 +66,7 @@ TEST_SUITE("sim_robot_states") {
     CHECK_THROWS_AS(parsePose(rt::List{rt::List{0, 0, 0}, rt::List{0, 0, 0, 0}}), FormatError);
     CHECK_THROWS_AS(parseJointPositions(rt::List{1, 2, 3}), FormatError);
     CHECK_THROWS_AS(parseLimb("middle"), FormatError);
-    CHECK(parseFrame("base") == sim::Frame::kBase);
+    CHECK(parseFrame("base") == sim::Frame::Base);
   }
 
   TEST_CASE("IK writes joints that reach the pose plus offset; out of reach aborts") {
@@ -80,7 +80,7 @@ TEST_SUITE("sim_robot_states") {
     sim::Ik ik(robot->world());
     const auto q = parseJointPositions(sm->userdata().at("hover_joints"));
     const sim::Pose reached =
-        robot->world().fromWorld(ik.forward(sim::Side::kLeft, q), sim::Frame::kBase);
+        robot->world().fromWorld(ik.forward(sim::Side::Left, q), sim::Frame::Base);
     CHECK(reached.position.z == doctest::Approx(0.021).epsilon(1e-3));
     sm->userdata().set("pick_pose", rt::List{rt::List{1.6, 0.15, -0.129}, kGripperDown});
     sm->userdata().set("hover_joints", nullptr);
@@ -91,17 +91,17 @@ TEST_SUITE("sim_robot_states") {
   TEST_CASE("a move reaches its goal; the limb can come from userdata") {
     auto robot = makeRobot();
     auto sm = wrap(std::make_unique<MoveToJointPositionsState>(*robot),
-                   {{"limb", "right"}, {"positions", joints(sim::neutralPose(sim::Side::kRight))}});
+                   {{"limb", "right"}, {"positions", joints(sim::neutralPose(sim::Side::Right))}});
     CHECK(outcomeOf(*sm) == "succeeded");
-    const auto q = robot->world().limb(sim::Side::kRight).jointPositions();
-    CHECK(maxError(q, sim::neutralPose(sim::Side::kRight)) < 0.01);
+    const auto q = robot->world().limb(sim::Side::Right).jointPositions();
+    CHECK(maxError(q, sim::neutralPose(sim::Side::Right)) < 0.01);
   }
 
   TEST_CASE("a preempted move stops early, holding the arm") {
     auto robot = makeRobot();
     auto sm = wrap(std::make_unique<MoveToJointPositionsState>(
         *robot, MoveToJointPositionsArgs{.limb = "left",
-                                         .positions = joints(sim::tuckPose(sim::Side::kLeft))}));
+                                         .positions = joints(sim::tuckPose(sim::Side::Left))}));
     double requested = 0.0;  // simulated time just after the request
     std::thread preempter([&] {
       while (robot->world().time() < 0.5) std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -111,20 +111,20 @@ TEST_SUITE("sim_robot_states") {
     CHECK(outcomeOf(*sm) == "preempted");
     preempter.join();
     CHECK(robot->world().time() <= requested + 0.01);
-    const auto held = robot->world().limb(sim::Side::kLeft).jointPositions();
+    const auto held = robot->world().limb(sim::Side::Left).jointPositions();
     robot->world().stepFor(0.5);
-    CHECK(maxError(held, robot->world().limb(sim::Side::kLeft).jointPositions()) < 0.05);
+    CHECK(maxError(held, robot->world().limb(sim::Side::Left).jointPositions()) < 0.05);
   }
 
   TEST_CASE("a trajectory visits its waypoints in order") {
     auto robot = makeRobot();
-    const rt::List points = {joints(sim::neutralPose(sim::Side::kLeft)),
-                             joints(sim::untuckPose(sim::Side::kLeft))};
+    const rt::List points = {joints(sim::neutralPose(sim::Side::Left)),
+                             joints(sim::untuckPose(sim::Side::Left))};
     auto sm = wrap(std::make_unique<FollowJointTrajActionState>(
         *robot, FollowJointTrajActionArgs{.limb = "left", .points = points}));
     CHECK(outcomeOf(*sm) == "succeeded");
-    const auto q = robot->world().limb(sim::Side::kLeft).jointPositions();
-    CHECK(maxError(q, sim::untuckPose(sim::Side::kLeft)) < 0.01);
+    const auto q = robot->world().limb(sim::Side::Left).jointPositions();
+    CHECK(maxError(q, sim::untuckPose(sim::Side::Left)) < 0.01);
   }
 
   TEST_CASE("the endpoint pose is read into userdata") {
@@ -134,7 +134,7 @@ TEST_SUITE("sim_robot_states") {
              {}, {{"pose", "endpoint"}});
     CHECK(outcomeOf(*sm) == "succeeded");
     const sim::Pose read = parsePose(sm->userdata().at("endpoint"));
-    const sim::Pose actual = robot->world().limb(sim::Side::kLeft).endpointPose();
+    const sim::Pose actual = robot->world().limb(sim::Side::Left).endpointPose();
     CHECK(read.position.x == doctest::Approx(actual.position.x));
     CHECK(read.orientation.w == doctest::Approx(actual.orientation.w));
   }
@@ -180,16 +180,16 @@ TEST_SUITE("sim_robot_states") {
     CHECK(std::string(argv[1]) == "--trace=log");
     CHECK(std::string(argv[2]) == "--quiet");
     CHECK(options.snapshot_dir == "/tmp/x");
-    CHECK(options.start_pose == StartPose::kUntuck);
+    CHECK(options.start_pose == StartPose::Untuck);
     CHECK_FALSE(options.report);
   }
 
   TEST_CASE("the report judges a stack with the tests' thresholds") {
     auto robot = makeRobot();
     REQUIRE(sim::placeBody(robot->world(), "block1", {{0.7, 0.0, -0.13}, {}}) ==
-            sim::PlaceStatus::kPlaced);
+            sim::PlaceStatus::Placed);
     REQUIRE(sim::placeBody(robot->world(), "block2", {{0.705, 0.0, -0.079}, {}}) ==
-            sim::PlaceStatus::kPlaced);
+            sim::PlaceStatus::Placed);
     robot->world().stepFor(1.0);
     const SceneReport report = sceneReport(robot->world());
     CHECK(report.stack.stacked);

@@ -18,7 +18,7 @@ namespace {
 constexpr int kTrials = 20;
 constexpr double kSpread = 0.03;
 
-auto jitter(const Vec3& pose, std::mt19937& random) -> Vec3 {
+Vec3 jitter(const Vec3& pose, std::mt19937& random) {
   std::uniform_real_distribution<double> offset(-kSpread, kSpread);
   const double dx = offset(random);
   const double dy = offset(random);
@@ -26,20 +26,20 @@ auto jitter(const Vec3& pose, std::mt19937& random) -> Vec3 {
 }
 
 // One trial: block 1 near pose 1 is stacked on block 2 near pose 2. Returns success.
-auto stackOnce(World& world, Ik& ik, unsigned seed) -> bool {
+bool stackOnce(World& world, Ik& ik, unsigned seed) {
   std::mt19937 random(seed);
   const Vec3 lower = jitter(kPose2, random);
   const Vec3 upper = jitter(kPose1, random);
   world.reset();
   putBlockOnTable(world, "block1", upper);
   putBlockOnTable(world, "block2", lower);
-  if (!world.limb(Side::kLeft).moveToJointPositions(untuckPose(Side::kLeft), {.speed = 0.6}).ok()) {
+  if (!world.limb(Side::Left).moveToJointPositions(untuckPose(Side::Left), {.speed = 0.6}).ok()) {
     return false;
   }
   const TaskOptions options{.move = {.speed = 0.5}};
-  if (!pickBlock(world, ik, Side::kLeft, gripPose(upper), options).ok) return false;
+  if (!pickBlock(world, ik, Side::Left, gripPose(upper), options).ok) return false;
   const Vec3 release{lower.x, lower.y, lower.z + kBlockSize};
-  if (!placeBlock(world, ik, Side::kLeft, gripPose(release), options).ok) return false;
+  if (!placeBlock(world, ik, Side::Left, gripPose(release), options).ok) return false;
   world.stepFor(1.0);
   const Vec3 top = centreOf(world, "block1");
   const Vec3 bottom = centreOf(world, "block2");

@@ -11,39 +11,37 @@
 
 namespace smachac::sim::test {
 
-auto loadWorld() -> std::unique_ptr<World> {
+std::unique_ptr<World> loadWorld() {
   LoadResult loaded = World::loadDefault();
   INFO(loaded.error);
   REQUIRE(loaded.world != nullptr);
   return std::move(loaded.world);
 }
 
-auto gripPose(const Vec3& tcp) -> Pose { return {tcp, overheadOrientation()}; }
+Pose gripPose(const Vec3& tcp) { return {tcp, overheadOrientation()}; }
 
-auto gripPoseForBlock(const Vec3& centre) -> Pose {
+Pose gripPoseForBlock(const Vec3& centre) {
   return gripPose({centre.x, centre.y, centre.z + 0.001});
 }
 
 void putBlockOnTable(World& world, const char* name, const Vec3& tcp) {
   const Pose pose{{tcp.x, tcp.y, kBlockRestZ}, {}};
-  REQUIRE(placeBody(world, name, pose) == PlaceStatus::kPlaced);
+  REQUIRE(placeBody(world, name, pose) == PlaceStatus::Placed);
 }
 
-auto maxJointError(const JointPositions& a, const JointPositions& b) -> double {
+double maxJointError(const JointPositions& a, const JointPositions& b) {
   double error = 0.0;
   for (size_t i = 0; i < a.size(); ++i) error = std::max(error, std::abs(a[i] - b[i]));
   return error;
 }
 
-auto distance(const Vec3& a, const Vec3& b) -> double {
+double distance(const Vec3& a, const Vec3& b) {
   return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z);
 }
 
-auto horizontalDistance(const Vec3& a, const Vec3& b) -> double {
-  return std::hypot(a.x - b.x, a.y - b.y);
-}
+double horizontalDistance(const Vec3& a, const Vec3& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
-auto centreOf(const World& world, const char* name) -> Vec3 {
+Vec3 centreOf(const World& world, const char* name) {
   const auto pose = bodyPose(world, name);
   REQUIRE(pose.has_value());
   return pose->position;

@@ -19,21 +19,21 @@ inline constexpr Vec3 kPose1{0.7, 0.15, -0.129};
 inline constexpr Vec3 kPose2{0.75, 0.0, -0.129};
 
 /// Loads sim/models/scene.xml; fails the test when it cannot.
-auto loadWorld() -> std::unique_ptr<World>;
+std::unique_ptr<World> loadWorld();
 
 /// TCP pose over a point with the demo's overhead gripper orientation (base frame).
-auto gripPose(const Vec3& tcp) -> Pose;
+Pose gripPose(const Vec3& tcp);
 /// The TCP grip pose for a block resting with its centre at `centre`: 1 mm above the centre,
 /// as in the demo (block centre -0.130, TCP target -0.129).
-auto gripPoseForBlock(const Vec3& centre) -> Pose;
+Pose gripPoseForBlock(const Vec3& centre);
 /// Puts a block on the table (centre at rest height) with its TCP target at `tcp`'s x, y.
 void putBlockOnTable(World& world, const char* name, const Vec3& tcp);
 
 /// Largest |a[i] - b[i]| over the joints.
-auto maxJointError(const JointPositions& a, const JointPositions& b) -> double;
-auto distance(const Vec3& a, const Vec3& b) -> double;
-auto horizontalDistance(const Vec3& a, const Vec3& b) -> double;
+double maxJointError(const JointPositions& a, const JointPositions& b);
+double distance(const Vec3& a, const Vec3& b);
+double horizontalDistance(const Vec3& a, const Vec3& b);
 /// Centre of a body (base frame); fails the test for an unknown body.
-auto centreOf(const World& world, const char* name) -> Vec3;
+Vec3 centreOf(const World& world, const char* name);
 
 }  // namespace smachac::sim::test

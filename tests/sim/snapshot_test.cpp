@@ -18,7 +18,7 @@ namespace smachac::sim::test {
 namespace {
 
 // Reads a PNG as RGB; returns false when it cannot.
-auto readPng(const std::string& path, Image& image) -> bool {
+bool readPng(const std::string& path, Image& image) {
   png_image png;
   std::memset(&png, 0, sizeof png);
   png.version = PNG_IMAGE_VERSION;
@@ -30,7 +30,7 @@ auto readPng(const std::string& path, Image& image) -> bool {
   return png_image_finish_read(&png, nullptr, image.rgb.data(), 0, nullptr) != 0;
 }
 
-auto distinctColours(const Image& image) -> size_t {
+size_t distinctColours(const Image& image) {
   std::set<unsigned> colours;
   for (size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
     colours.insert(image.rgb[i] << 16 | image.rgb[i + 1] << 8 | image.rgb[i + 2]);
@@ -42,7 +42,7 @@ TEST_SUITE("sim_snapshot") {
   TEST_CASE("a snapshot is written as a PNG of the requested size with a real picture") {
     auto world = loadWorld();
     putBlockOnTable(*world, "block1", kPose1);
-    world->limb(Side::kLeft).moveToJointPositions(untuckPose(Side::kLeft), {.speed = 1.0});
+    world->limb(Side::Left).moveToJointPositions(untuckPose(Side::Left), {.speed = 1.0});
     Snapshotter snapshotter(*world);
     const std::string path = "sim_snapshot_test.png";
     const SnapshotResult written = snapshotter.writePng(path, {.width = 320, .height = 240});

@@ -22,14 +22,14 @@ constexpr Vec3 kStackPose{0.65, -0.05, -0.129};
 // gripper waiting at its hover pose stays clear of the left arm stacking at pose 2.
 constexpr Vec3 kRightPickPose{0.7, -0.2, -0.129};
 
-auto above(const Vec3& v, double dz) -> Vec3 { return {v.x, v.y, v.z + dz}; }
+Vec3 above(const Vec3& v, double dz) { return {v.x, v.y, v.z + dz}; }
 
 void moveToStart(World& world, Side side) {
   REQUIRE(world.limb(side).moveToJointPositions(untuckPose(side)).ok());
 }
 
 void requireTask(const TaskResult& result) {
-  INFO("failed step " << result.failedStep << ": " << result.detail);
+  INFO("failed step " << result.failed_step << ": " << result.detail);
   REQUIRE(result.ok);
 }
 
@@ -54,16 +54,16 @@ TEST_SUITE("sim_tasks") {
     auto world = loadWorld();
     Ik ik(*world);
     putBlockOnTable(*world, "block1", kPose1);
-    moveToStart(*world, Side::kLeft);
+    moveToStart(*world, Side::Left);
     requireTask(
-        pickBlock(*world, ik, Side::kLeft, gripPoseForBlock({kPose1.x, kPose1.y, kBlockRestZ})));
-    requireTask(placeBlock(*world, ik, Side::kLeft, gripPose(kPose2)));
+        pickBlock(*world, ik, Side::Left, gripPoseForBlock({kPose1.x, kPose1.y, kBlockRestZ})));
+    requireTask(placeBlock(*world, ik, Side::Left, gripPose(kPose2)));
     world->stepFor(1.0);
     const Vec3 target{kPose2.x, kPose2.y, kBlockRestZ};
     const Vec3 placed = centreOf(*world, "block1");
     INFO("block at " << placed.x << " " << placed.y << " " << placed.z);
     CHECK(distance(placed, target) < 0.01);
-    CHECK_FALSE(world->gripper(Side::kLeft).heldBody().has_value());
+    CHECK_FALSE(world->gripper(Side::Left).heldBody().has_value());
     checkNoWarnings(*world);
     MESSAGE("pick and place: " << world->time() << " s simulated, real-time factor "
                                << world->realTimeFactor());
@@ -74,13 +74,13 @@ TEST_SUITE("sim_tasks") {
     Ik ik(*world);
     putBlockOnTable(*world, "block1", kPose1);
     putBlockOnTable(*world, "block2", kPose2);
-    moveToStart(*world, Side::kLeft);
+    moveToStart(*world, Side::Left);
     // PICK_AND_PLACE_BLOCK_1: block 2 to the stacking spot.
-    requireTask(pickBlock(*world, ik, Side::kLeft, gripPose(kPose2)));
-    requireTask(placeBlock(*world, ik, Side::kLeft, gripPose(kStackPose)));
+    requireTask(pickBlock(*world, ik, Side::Left, gripPose(kPose2)));
+    requireTask(placeBlock(*world, ik, Side::Left, gripPose(kStackPose)));
     // PICK_AND_PLACE_BLOCK_2: block 1 on top of it, one block size higher.
-    requireTask(pickBlock(*world, ik, Side::kLeft, gripPose(kPose1)));
-    requireTask(placeBlock(*world, ik, Side::kLeft, gripPose(above(kStackPose, kBlockSize))));
+    requireTask(pickBlock(*world, ik, Side::Left, gripPose(kPose1)));
+    requireTask(placeBlock(*world, ik, Side::Left, gripPose(above(kStackPose, kBlockSize))));
     world->stepFor(1.0);
     checkStacked(*world, "block1", "block2");
     CHECK(horizontalDistance(centreOf(*world, "block2"), kStackPose) < 0.01);
@@ -92,44 +92,42 @@ TEST_SUITE("sim_tasks") {
     Ik ik(*world);
     putBlockOnTable(*world, "block1", kPose1);
     putBlockOnTable(*world, "block2", kRightPickPose);
-    const Side sides[] = {Side::kLeft, Side::kRight};
+    const Side sides[] = {Side::Left, Side::Right};
     const Vec3 picks[] = {kPose1, kRightPickPose};
     JointPositions hover[2];
     JointPositions grip[2];
     for (int i = 0; i < 2; ++i) {
       const IkResult h = ik.solveFromSeeds(
-          sides[i], world->toWorld(gripPose(above(picks[i], kHoverOffset)), Frame::kBase),
+          sides[i], world->toWorld(gripPose(above(picks[i], kHoverOffset)), Frame::Base),
           std::array<JointPositions, 1>{untuckPose(sides[i])}, {});
       REQUIRE(h.ok());
       hover[i] = h.joints;
       const IkResult g =
-          ik.solveFromSeeds(sides[i], world->toWorld(gripPose(picks[i]), Frame::kBase),
+          ik.solveFromSeeds(sides[i], world->toWorld(gripPose(picks[i]), Frame::Base),
                             std::array<JointPositions, 1>{hover[i]}, {});
       REQUIRE(g.ok());
       grip[i] = g.joints;
     }
-    auto bothMove = [&](const JointPositions(&goals)[2]) {
+    auto both_move = [&](const JointPositions(&goals)[2]) {
       for (int i = 0; i < 2; ++i) REQUIRE(world->limb(sides[i]).startMove(goals[i]));
       REQUIRE(world->stepUntil(
-          [&] {
-            return world->limb(Side::kLeft).moveDone() && world->limb(Side::kRight).moveDone();
-          },
+          [&] { return world->limb(Side::Left).moveDone() && world->limb(Side::Right).moveDone(); },
           15.0));
     };
-    const JointPositions start[2] = {untuckPose(Side::kLeft), untuckPose(Side::kRight)};
-    bothMove(start);
-    bothMove(hover);
-    bothMove(grip);
+    const JointPositions start[2] = {untuckPose(Side::Left), untuckPose(Side::Right)};
+    both_move(start);
+    both_move(hover);
+    both_move(grip);
     for (Side side : sides) world->gripper(side).commandClose();
     world->stepFor(0.5);
-    bothMove(hover);
-    CHECK(world->gripper(Side::kLeft).heldBody() == "block1");
-    CHECK(world->gripper(Side::kRight).heldBody() == "block2");
+    both_move(hover);
+    CHECK(world->gripper(Side::Left).heldBody() == "block1");
+    CHECK(world->gripper(Side::Right).heldBody() == "block2");
     // STACK_BLOCKS: left puts block 1 down at pose 2 and goes back to its start pose (out of
     // the way), right puts block 2 on top.
-    requireTask(placeBlock(*world, ik, Side::kLeft, gripPose(kPose2)));
-    moveToStart(*world, Side::kLeft);
-    requireTask(placeBlock(*world, ik, Side::kRight, gripPose(above(kPose2, kBlockSize))));
+    requireTask(placeBlock(*world, ik, Side::Left, gripPose(kPose2)));
+    moveToStart(*world, Side::Left);
+    requireTask(placeBlock(*world, ik, Side::Right, gripPose(above(kPose2, kBlockSize))));
     world->stepFor(1.0);
     checkStacked(*world, "block2", "block1");
     checkNoWarnings(*world);
@@ -145,14 +143,14 @@ TEST_SUITE("sim_tasks") {
       if (!world->limb(side).moveToJointPositions(untuckPose(side)).ok()) return;
       result = pickBlock(*world, ik, side, gripPose(pose));
     };
-    std::thread left(pick, Side::kLeft, kPose1, std::ref(results[0]));
-    std::thread right(pick, Side::kRight, kRightPickPose, std::ref(results[1]));
+    std::thread left(pick, Side::Left, kPose1, std::ref(results[0]));
+    std::thread right(pick, Side::Right, kRightPickPose, std::ref(results[1]));
     left.join();
     right.join();
     requireTask(results[0]);
     requireTask(results[1]);
-    CHECK(world->gripper(Side::kLeft).heldBody() == "block1");
-    CHECK(world->gripper(Side::kRight).heldBody() == "block2");
+    CHECK(world->gripper(Side::Left).heldBody() == "block1");
+    CHECK(world->gripper(Side::Right).heldBody() == "block2");
     checkNoWarnings(*world);
   }
 }

@@ -26,7 +26,7 @@ TEST_SUITE("sim_world") {
     CHECK_FALSE(world->hasWarnings());
     // Parked blocks rest on the floor (the floor collides).
     for (const char* block : {"block1", "block2"}) {
-      const auto parked = bodyPose(*world, block, Frame::kWorld);
+      const auto parked = bodyPose(*world, block, Frame::World);
       REQUIRE(parked.has_value());
       CHECK(parked->position.z == doctest::Approx(kBlockSize / 2).epsilon(0.02));
     }
@@ -40,9 +40,9 @@ TEST_SUITE("sim_world") {
     const std::string path = "sim_test_not_baxter.xml";
     std::ofstream(path)
         << "<mujoco><worldbody><geom type='sphere' size='0.1'/></worldbody></mujoco>";
-    LoadResult notBaxter = World::load(path);
-    CHECK(notBaxter.world == nullptr);
-    CHECK(notBaxter.error.find("model has no body `base`") != std::string::npos);
+    LoadResult not_baxter = World::load(path);
+    CHECK(not_baxter.world == nullptr);
+    CHECK(not_baxter.error.find("model has no body `base`") != std::string::npos);
     std::remove(path.c_str());
   }
 
@@ -59,7 +59,7 @@ TEST_SUITE("sim_world") {
   TEST_CASE("gravity compensation holds the arms still at q = 0") {
     auto world = loadWorld();
     world->stepFor(2.0);
-    for (Side side : {Side::kLeft, Side::kRight}) {
+    for (Side side : {Side::Left, Side::Right}) {
       CHECK(maxJointError(world->limb(side).jointPositions(), JointPositions{}) < 1e-4);
     }
   }
@@ -68,11 +68,11 @@ TEST_SUITE("sim_world") {
     auto world = loadWorld();
     const Vec3 parked = centreOf(*world, "block1");
     putBlockOnTable(*world, "block1", kPose1);
-    world->limb(Side::kLeft).startMove(neutralPose(Side::kLeft));
+    world->limb(Side::Left).startMove(neutralPose(Side::Left));
     world->stepFor(1.0);
     world->reset();
     CHECK(world->time() == 0.0);
-    CHECK(maxJointError(world->limb(Side::kLeft).jointPositions(), JointPositions{}) == 0.0);
+    CHECK(maxJointError(world->limb(Side::Left).jointPositions(), JointPositions{}) == 0.0);
     CHECK(distance(centreOf(*world, "block1"), parked) == 0.0);
   }
 
@@ -80,8 +80,8 @@ TEST_SUITE("sim_world") {
     auto run = [] {
       auto world = loadWorld();
       putBlockOnTable(*world, "block1", kPose1);
-      world->limb(Side::kLeft).moveToJointPositions(untuckPose(Side::kLeft), {.speed = 1.0});
-      return world->limb(Side::kLeft).endpointPose().position;
+      world->limb(Side::Left).moveToJointPositions(untuckPose(Side::Left), {.speed = 1.0});
+      return world->limb(Side::Left).endpointPose().position;
     };
     const Vec3 first = run();
     const Vec3 second = run();
@@ -97,21 +97,21 @@ TEST_SUITE("sim_world") {
     const Vec3 rest = centreOf(*world, "block2");
     CHECK(horizontalDistance(rest, kPose2) < 1e-4);
     CHECK(rest.z == doctest::Approx(kBlockRestZ).epsilon(0.01));
-    const auto worldPose = bodyPose(*world, "block2", Frame::kWorld);
-    REQUIRE(worldPose.has_value());
-    CHECK(worldPose->position.z == doctest::Approx(rest.z + 0.93));
+    const auto world_pose = bodyPose(*world, "block2", Frame::World);
+    REQUIRE(world_pose.has_value());
+    CHECK(world_pose->position.z == doctest::Approx(rest.z + 0.93));
 
-    const Pose tableAt{{1.0, 0.0, 0.0}, {}};
-    CHECK(placeBody(*world, "table", tableAt, Frame::kWorld) == PlaceStatus::kPlaced);
-    CHECK(placeBody(*world, "no_such_body", tableAt) == PlaceStatus::kUnknownBody);
-    CHECK(placeBody(*world, "left_hand", tableAt) == PlaceStatus::kNotMovable);
-    CHECK(placeBody(*world, "block1", {{NAN, 0, 0}, {}}) == PlaceStatus::kInvalidPose);
+    const Pose table_at{{1.0, 0.0, 0.0}, {}};
+    CHECK(placeBody(*world, "table", table_at, Frame::World) == PlaceStatus::Placed);
+    CHECK(placeBody(*world, "no_such_body", table_at) == PlaceStatus::UnknownBody);
+    CHECK(placeBody(*world, "left_hand", table_at) == PlaceStatus::NotMovable);
+    CHECK(placeBody(*world, "block1", {{NAN, 0, 0}, {}}) == PlaceStatus::InvalidPose);
     CHECK_FALSE(bodyPose(*world, "no_such_body").has_value());
   }
 
   TEST_CASE("a block dropped from above lands on the table, warning free") {
     auto world = loadWorld();
-    REQUIRE(placeBody(*world, "block2", {{0.8, -0.2, 0.2}, {}}) == PlaceStatus::kPlaced);
+    REQUIRE(placeBody(*world, "block2", {{0.8, -0.2, 0.2}, {}}) == PlaceStatus::Placed);
     world->stepFor(1.5);
     CHECK(centreOf(*world, "block2").z == doctest::Approx(kBlockRestZ).epsilon(0.02));
     CHECK_FALSE(world->hasWarnings());
@@ -121,10 +121,10 @@ TEST_SUITE("sim_world") {
   TEST_CASE("frame conversion: base is 0.93 m above the world origin") {
     auto world = loadWorld();
     const Pose base{{0.1, 0.2, 0.3}, {}};
-    const Pose inWorld = world->toWorld(base, Frame::kBase);
-    CHECK(inWorld.position.z == doctest::Approx(1.23));
-    CHECK(world->fromWorld(inWorld, Frame::kBase).position.z == doctest::Approx(0.3));
-    CHECK(world->toWorld(base, Frame::kWorld).position.z == 0.3);
+    const Pose in_world = world->toWorld(base, Frame::Base);
+    CHECK(in_world.position.z == doctest::Approx(1.23));
+    CHECK(world->fromWorld(in_world, Frame::Base).position.z == doctest::Approx(0.3));
+    CHECK(world->toWorld(base, Frame::World).position.z == 0.3);
   }
 
   TEST_CASE("the real-time factor is measured") {

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "backends/tmpl/environment.h"
-#include "backends/tmpl/value_convert.h"
-#include "backends/tmpl/value_print.h"
+#include "backends/tmpl/values/value_convert.h"
+#include "backends/tmpl/values/value_print.h"
 
 namespace {
 
@@ -54,7 +54,7 @@ void parseFile(const fs::path& path, std::vector<Case>& cases) {
   text << in.rdbuf();
   std::string content = text.str();
   std::vector<std::string>* section = nullptr;
-  bool inCase = false;
+  bool in_case = false;
   size_t start = 0;
   while (start <= content.size()) {
     size_t end = content.find('\n', start);
@@ -65,9 +65,9 @@ void parseFile(const fs::path& path, std::vector<Case>& cases) {
       std::string name = line.substr(5);
       name.erase(name.find_last_not_of(" \t") + 1);
       cases.push_back(Case{path.stem().string() + "/" + name, {}, {}, {}});
-      inCase = true;
+      in_case = true;
       section = nullptr;
-    } else if (!inCase) {
+    } else if (!in_case) {
       continue;
     } else if (line.rfind("--- ", 0) == 0) {
       std::vector<std::string> words = splitWords(line.substr(4));
@@ -117,7 +117,7 @@ std::string runOp(Environment& env, const std::string& main, const Value& contex
     if (words[i].rfind("skip=", 0) == 0) {
       std::stringstream list(words[i].substr(5));
       for (std::string name; std::getline(list, name, ',');) {
-        if (!name.empty()) options.skipBlocks.push_back(name);
+        if (!name.empty()) options.skip_blocks.push_back(name);
       }
     } else if (words[i] != "error") {
       args.push_back(words[i]);

@@ -4,7 +4,8 @@
 #   std::span<const smachac::EmbeddedFile> <ns>::<fn>();
 # listing every file (path relative to BASE_DIR, bytes) in the order given. The generated
 # source is rebuilt whenever one of the files changes. Used to embed templates/ into the
-# compiler so that a built binary needs no data files.
+# compiler so that a built binary needs no data files. The calling folder is the library's
+# include root (its header declares <fn>).
 function(smachac_embed_files target)
   cmake_parse_arguments(EMB "" "NAMESPACE;FUNCTION;BASE_DIR" "FILES" ${ARGN})
   set(out "${CMAKE_CURRENT_BINARY_DIR}/${target}_embedded.cpp")
@@ -21,5 +22,7 @@ function(smachac_embed_files target)
     COMMENT "Embedding ${target}"
     VERBATIM)
   add_library(${target} STATIC "${out}")
-  target_include_directories(${target} PUBLIC "${PROJECT_SOURCE_DIR}")
+  file(RELATIVE_PATH folder "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
+  smachac_include_root(${target} "${folder}")  # the folder's header declares the function
+  target_link_libraries(${target} PUBLIC smachac_support)
 endfunction()

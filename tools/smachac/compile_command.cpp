@@ -101,15 +101,16 @@ std::string outputPath(const CompileOptions& o, const std::string& dir,
   return o.output.empty() ? "-" : o.output;
 }
 
+/// Writes the files; their contents are moved out (a big script's code is not copied).
 int writeOutputs(const CompileOptions& o, const std::string& dir,
-                 const std::vector<backends::OutputFile>& files) {
+                 std::vector<backends::OutputFile>& files) {
   std::vector<std::pair<std::string, std::string>> contents;
-  for (const backends::OutputFile& file : files) {
+  for (backends::OutputFile& file : files) {
     std::string path = outputPath(o, dir, file);
     if (path == "-") {
       writeFileAtomically(path, file.content);
     } else {
-      contents.emplace_back(std::move(path), file.content);
+      contents.emplace_back(std::move(path), std::move(file.content));
     }
   }
   std::optional<std::string> error = writeFilesAtomically(contents);

@@ -1,6 +1,6 @@
 // `smachac help [TEMPLATE] [--target=smach|cpp|flexbe] [-I dir]... [--ansi|--no-ansi]`: without
 // a template, lists the templates of each target (or of --target) with a one-line summary;
-// with one, prints its meta block readably, as SMACHA's help does (backends/template_help.h
+// with one, prints its meta block readably, as SMACHA's help does (backends/meta/template_help.h
 // lays it out).
 #include <CLI/CLI.hpp>
 
@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "backends/template_help.h"
+#include "backends/meta/template_help.h"
 #include "backends/tmpl/environment.h"
 #include "ir/support/diagnostic_emitter.h"
 #include "ir/support/diagnostic_printer.h"
@@ -94,7 +94,7 @@ int runHelp(const Args& args) {
         {style.title, style.heading, style.name, style.type, style.reset});
   } catch (const tmpl::TemplateError& e) {
     generator::TemplateFiles files(sources, path.builtins);
-    diags.emit<DiagKind::TemplateError>(files.locate(e), e.message());
+    diags.emit<DiagKind::TemplateError>(files.locate(e), ForeignMessage(e.message()));
     return fail(diags, sources);
   }
   return kExitOk;

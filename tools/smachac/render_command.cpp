@@ -16,7 +16,7 @@
 #include "backends/generator/template_values.h"
 #include "backends/smach/python_extensions.h"
 #include "backends/tmpl/environment.h"
-#include "backends/tmpl/value_convert.h"
+#include "backends/tmpl/values/value_convert.h"
 #include "templates/builtin_templates.h"
 #include "tools/smachac/commands.h"
 #include "tools/smachac/output.h"
@@ -28,11 +28,11 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RenderOptions {
-  std::string templateArg;
-  std::string contextPath;
-  std::vector<std::string> templateDirs;
-  std::vector<std::string> builtinSets;
-  std::vector<std::string> skipBlocks;
+  std::string template_arg;
+  std::string context_path;
+  std::vector<std::string> template_dirs;
+  std::vector<std::string> builtin_sets;
+  std::vector<std::string> skip_blocks;
   std::string block;
   std::string output = "-";
 };
@@ -46,18 +46,18 @@ int reportError(const tmpl::TemplateError& e, const char* kind) {
 
 std::optional<int> parse(RenderOptions& o, const Args& args) {
   CLI::App app{"smachac render: render a template with a JSON or YAML context", "smachac render"};
-  app.add_option("template", o.templateArg, "template name (Foo, Foo.tpl.py) or file path")
+  app.add_option("template", o.template_arg, "template name (Foo, Foo.tpl.py) or file path")
       ->required()
       ->type_name("TEMPLATE");
-  app.add_option("--context", o.contextPath, "render variables (.json, .yml or .yaml)")
+  app.add_option("--context", o.context_path, "render variables (.json, .yml or .yaml)")
       ->type_name("FILE");
-  app.add_option("-I", o.templateDirs, "template search directory (repeatable, searched first)")
+  app.add_option("-I", o.template_dirs, "template search directory (repeatable, searched first)")
       ->type_name("DIR");
-  app.add_option("--builtin-set", o.builtinSets, "built-in template set (default: smach)")
+  app.add_option("--builtin-set", o.builtin_sets, "built-in template set (default: smach)")
       ->type_name("SET");
   app.add_option("--block", o.block, "render only this block, isolated and stripped")
       ->type_name("NAME");
-  app.add_option("--skip-block", o.skipBlocks, "remove this block while rendering (repeatable)")
+  app.add_option("--skip-block", o.skip_blocks, "remove this block while rendering (repeatable)")
       ->type_name("NAME");
   app.add_option("-o", o.output, "output file (default: stdout)")->type_name("FILE");
   return parseArgs(app, args);
@@ -84,29 +84,29 @@ tmpl::Value loadContext(const std::string& path, const std::string& text) {
 
 int render(RenderOptions& o) {
   tmpl::Value context = tmpl::Value::newDict();
-  if (!o.contextPath.empty()) {
-    std::optional<std::string> text = readFile(o.contextPath);
-    if (!text) return usageError("cannot read `" + o.contextPath + "`");
+  if (!o.context_path.empty()) {
+    std::optional<std::string> text = readFile(o.context_path);
+    if (!text) return usageError("cannot read `" + o.context_path + "`");
     try {
-      context = loadContext(o.contextPath, *text);
+      context = loadContext(o.context_path, *text);
     } catch (const tmpl::TemplateError& e) {
       return reportError(e, "context-error");
     }
   }
-  std::string name = o.templateArg;
+  std::string name = o.template_arg;
   std::error_code ec;
-  if (fs::is_regular_file(o.templateArg, ec)) {
-    fs::path path(o.templateArg);
-    o.templateDirs.insert(o.templateDirs.begin(),
-                          path.has_parent_path() ? path.parent_path().string() : ".");
+  if (fs::is_regular_file(o.template_arg, ec)) {
+    fs::path path(o.template_arg);
+    o.template_dirs.insert(o.template_dirs.begin(),
+                           path.has_parent_path() ? path.parent_path().string() : ".");
     name = path.filename().string();
   }
-  if (o.builtinSets.empty()) o.builtinSets.push_back("smach");
-  tmpl::Environment env(o.templateDirs, o.builtinSets, templates::builtinTemplates());
+  if (o.builtin_sets.empty()) o.builtin_sets.push_back("smach");
+  tmpl::Environment env(o.template_dirs, o.builtin_sets, templates::builtinTemplates());
   generator::ValueConverter converter;  // the SMACH templates' filters and tests (pyrepr, ...)
   backends::smach::registerPythonExtensions(env, converter, /*include_comments=*/false);
   if (std::optional<std::string> resolved = env.resolveScriptTemplate(name)) name = *resolved;
-  tmpl::RenderOptions options{o.skipBlocks};
+  tmpl::RenderOptions options{o.skip_blocks};
   std::string out = o.block.empty() ? env.render(name, context, options)
                                     : env.renderBlock(name, o.block, context, options);
   if (std::optional<std::string> error = writeFileAtomically(o.output, out)) {

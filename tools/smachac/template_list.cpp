@@ -4,9 +4,9 @@
 #include <memory>
 #include <string_view>
 
-#include "backends/template_help.h"
-#include "backends/tmpl/value_convert.h"
-#include "backends/tmpl/value_print.h"
+#include "backends/meta/template_help.h"
+#include "backends/tmpl/values/value_convert.h"
+#include "backends/tmpl/values/value_print.h"
 
 namespace smachac::driver {
 namespace {

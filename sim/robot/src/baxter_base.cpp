@@ -10,16 +10,15 @@
 namespace smachac::robot {
 namespace {
 
-auto parseStartPose(std::string_view name) -> std::optional<StartPose> {
-  if (name == "none") return StartPose::kNone;
-  if (name == "neutral") return StartPose::kNeutral;
-  if (name == "untuck") return StartPose::kUntuck;
+std::optional<StartPose> parseStartPose(std::string_view name) {
+  if (name == "none") return StartPose::None;
+  if (name == "neutral") return StartPose::Neutral;
+  if (name == "untuck") return StartPose::Untuck;
   return std::nullopt;
 }
 
 // Applies one flag; false when it is not a robot flag. `error` is set for a bad value.
-auto applyFlag(std::string_view arg, RobotOptions& options, std::optional<std::string>& error)
-    -> bool {
+bool applyFlag(std::string_view arg, RobotOptions& options, std::optional<std::string>& error) {
   if (arg.starts_with("--snapshots=")) {
     options.snapshot_dir = arg.substr(12);
   } else if (arg.starts_with("--scene=")) {
@@ -27,7 +26,7 @@ auto applyFlag(std::string_view arg, RobotOptions& options, std::optional<std::s
   } else if (arg.starts_with("--start-pose=")) {
     const auto pose = parseStartPose(arg.substr(13));
     if (!pose) error = "unknown start pose `" + std::string(arg.substr(13)) + "`";
-    options.start_pose = pose.value_or(StartPose::kNone);
+    options.start_pose = pose.value_or(StartPose::None);
   } else if (arg == "--no-report") {
     options.report = false;
   } else if (arg == "--robot-quiet") {
@@ -40,7 +39,7 @@ auto applyFlag(std::string_view arg, RobotOptions& options, std::optional<std::s
 
 }  // namespace
 
-auto takeRobotFlags(int& argc, char** argv, RobotOptions& options) -> std::optional<std::string> {
+std::optional<std::string> takeRobotFlags(int& argc, char** argv, RobotOptions& options) {
   std::optional<std::string> error;
   int kept = 1;
   for (int i = 1; i < argc; ++i) {
@@ -51,7 +50,7 @@ auto takeRobotFlags(int& argc, char** argv, RobotOptions& options) -> std::optio
   return error;
 }
 
-auto setUpBaxter(int& argc, char** argv) -> std::unique_ptr<RobotContext> {
+std::unique_ptr<RobotContext> setUpBaxter(int& argc, char** argv) {
   RobotOptions options;
   if (const char* dir = std::getenv("SMACHAC_SNAPSHOTS")) options.snapshot_dir = dir;
   if (auto error = takeRobotFlags(argc, argv, options)) {
@@ -64,13 +63,13 @@ auto setUpBaxter(int& argc, char** argv) -> std::unique_ptr<RobotContext> {
   return context;
 }
 
-auto finishBaxter(RobotContext& context) -> SceneReport {
+SceneReport finishBaxter(RobotContext& context) {
   context.world().stepFor(context.options().settle_seconds);
   context.snapshot("final");
   return sceneReport(context.world());
 }
 
-auto runBaxter(rt::State& root, RobotContext& context, int argc, char** argv) -> int {
+int runBaxter(rt::State& root, RobotContext& context, int argc, char** argv) {
   root.setThreadObserver(&context);  // simulated time waits for late-starting arms
   const int code = rt::runMain(root, argc, argv);
   if (code == 2) return code;

@@ -19,7 +19,7 @@ constexpr std::string_view kPoseShape =
 }
 
 // The numbers of a list of exactly `count` numbers, or nothing.
-auto numberList(const rt::Value& value, std::size_t count) -> std::optional<std::vector<double>> {
+std::optional<std::vector<double>> numberList(const rt::Value& value, std::size_t count) {
   if (value.type() != rt::ValueType::List || value.list().size() != count) return std::nullopt;
   std::vector<double> result;
   for (const rt::Value& item : value.list()) {
@@ -34,7 +34,7 @@ auto numberList(const rt::Value& value, std::size_t count) -> std::optional<std:
 }
 
 // Position and quaternion numbers (x y z qx qy qz qw) of a pose in either shape.
-auto poseNumbers(const rt::Value& value) -> std::optional<std::array<double, 7>> {
+std::optional<std::array<double, 7>> poseNumbers(const rt::Value& value) {
   std::array<double, 7> out{};
   if (auto flat = numberList(value, 7)) {
     std::copy(flat->begin(), flat->end(), out.begin());
@@ -49,20 +49,20 @@ auto poseNumbers(const rt::Value& value) -> std::optional<std::array<double, 7>>
   return out;
 }
 
-auto norm(const sim::Quaternion& q) -> double {
+double norm(const sim::Quaternion& q) {
   return std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
 }
 
-auto toPose(const std::array<double, 7>& n) -> sim::Pose {
+sim::Pose toPose(const std::array<double, 7>& n) {
   return {{n[0], n[1], n[2]}, {n[6], n[3], n[4], n[5]}};
 }
 
-auto unit(const sim::Quaternion& q) -> sim::Quaternion {
+sim::Quaternion unit(const sim::Quaternion& q) {
   const double length = norm(q);
   return {q.w / length, q.x / length, q.y / length, q.z / length};
 }
 
-auto multiply(const sim::Quaternion& a, const sim::Quaternion& b) -> sim::Quaternion {
+sim::Quaternion multiply(const sim::Quaternion& a, const sim::Quaternion& b) {
   return {
       a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
       a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
@@ -70,7 +70,7 @@ auto multiply(const sim::Quaternion& a, const sim::Quaternion& b) -> sim::Quater
 
 }  // namespace
 
-auto parsePose(const rt::Value& value) -> sim::Pose {
+sim::Pose parsePose(const rt::Value& value) {
   const auto n = poseNumbers(value);
   if (!n) fail("a pose", kPoseShape, value);
   sim::Pose pose = toPose(*n);
@@ -79,24 +79,24 @@ auto parsePose(const rt::Value& value) -> sim::Pose {
   return pose;
 }
 
-auto parseOffset(const rt::Value& value) -> sim::Pose {
+sim::Pose parseOffset(const rt::Value& value) {
   if (auto position = numberList(value, 3))
     return {{(*position)[0], (*position)[1], (*position)[2]}};
   const auto n = poseNumbers(value);
   if (!n) fail("an offset", std::string(kPoseShape) + " or [x, y, z]", value);
   sim::Pose offset = toPose(*n);
-  const bool noRotation = norm(offset.orientation) < 1e-12;
-  offset.orientation = noRotation ? sim::Quaternion{} : unit(offset.orientation);
+  const bool no_rotation = norm(offset.orientation) < 1e-12;
+  offset.orientation = no_rotation ? sim::Quaternion{} : unit(offset.orientation);
   return offset;
 }
 
-auto applyOffset(const sim::Pose& pose, const sim::Pose& offset) -> sim::Pose {
+sim::Pose applyOffset(const sim::Pose& pose, const sim::Pose& offset) {
   const sim::Vec3 p{pose.position.x + offset.position.x, pose.position.y + offset.position.y,
                     pose.position.z + offset.position.z};
   return {p, unit(multiply(pose.orientation, offset.orientation))};
 }
 
-auto parseJointPositions(const rt::Value& value) -> sim::JointPositions {
+sim::JointPositions parseJointPositions(const rt::Value& value) {
   const rt::Value* joints = &value;
   if (value.type() == rt::ValueType::List && value.list().size() == 1) joints = &value.list()[0];
   const auto n = numberList(*joints, sim::kArmJointCount);
@@ -106,7 +106,7 @@ auto parseJointPositions(const rt::Value& value) -> sim::JointPositions {
   return result;
 }
 
-auto parseJointPoints(const rt::Value& value) -> std::vector<sim::JointPositions> {
+std::vector<sim::JointPositions> parseJointPoints(const rt::Value& value) {
   if (value.type() != rt::ValueType::List || value.list().empty()) {
     fail("joint points", "a non-empty list of joint positions", value);
   }
@@ -115,25 +115,25 @@ auto parseJointPoints(const rt::Value& value) -> std::vector<sim::JointPositions
   return points;
 }
 
-auto parseLimb(std::string_view limb) -> sim::Side {
-  if (limb == "left") return sim::Side::kLeft;
-  if (limb == "right") return sim::Side::kRight;
+sim::Side parseLimb(std::string_view limb) {
+  if (limb == "left") return sim::Side::Left;
+  if (limb == "right") return sim::Side::Right;
   fail("a limb", "`left` or `right`", rt::Value(limb));
 }
 
-auto parseFrame(std::string_view frame) -> sim::Frame {
-  if (frame.empty() || frame == "world") return sim::Frame::kWorld;
-  if (frame == "base") return sim::Frame::kBase;
+sim::Frame parseFrame(std::string_view frame) {
+  if (frame.empty() || frame == "world") return sim::Frame::World;
+  if (frame == "base") return sim::Frame::Base;
   fail("a reference frame", "`base` or `world`", rt::Value(frame));
 }
 
-auto poseValue(const sim::Pose& pose) -> rt::Value {
+rt::Value poseValue(const sim::Pose& pose) {
   const sim::Vec3& p = pose.position;
   const sim::Quaternion& q = pose.orientation;
   return rt::List{rt::List{p.x, p.y, p.z}, rt::List{q.x, q.y, q.z, q.w}};
 }
 
-auto jointsValue(const sim::JointPositions& joints) -> rt::Value {
+rt::Value jointsValue(const sim::JointPositions& joints) {
   return rt::List(joints.begin(), joints.end());
 }
 

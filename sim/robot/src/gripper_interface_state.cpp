@@ -13,14 +13,14 @@ namespace {
 constexpr double kSettledRate = 4e-3;  // m/s: both fingers slower than the sim's 2 mm/s
 constexpr double kSettledTime = 0.05;  // simulated seconds (the sim's 25 steps)
 
-auto inputs(const GripperInterfaceArgs& args) -> rt::Keys {
+rt::Keys inputs(const GripperInterfaceArgs& args) {
   rt::Keys keys;
   if (args.limb.empty()) keys.push_back("limb");
   if (args.command.empty()) keys.push_back("command");
   return keys;
 }
 
-auto isClose(const std::string& command) -> bool {
+bool isClose(const std::string& command) {
   if (command == "close") return true;
   if (command == "open") return false;
   throw FormatError("a gripper command must be `open` or `close`, not `" + command + "`");
@@ -31,7 +31,7 @@ auto isClose(const std::string& command) -> bool {
 GripperInterfaceState::GripperInterfaceState(RobotContext& context, GripperInterfaceArgs args)
     : RobotState(context, inputs(args)), args_(std::move(args)) {}
 
-auto GripperInterfaceState::run(rt::UserData& userdata) -> std::string {
+std::string GripperInterfaceState::run(rt::UserData& userdata) {
   const sim::Side side = limbOf(args_.limb, userdata);
   const bool close =
       isClose(args_.command.empty() ? userdata.get<std::string>("command") : args_.command);
@@ -40,44 +40,44 @@ auto GripperInterfaceState::run(rt::UserData& userdata) -> std::string {
   return judge(*result, close);
 }
 
-auto GripperInterfaceState::actuate(sim::Gripper& gripper, bool close)
-    -> std::optional<sim::GripperResult> {
+std::optional<sim::GripperResult> GripperInterfaceState::actuate(sim::Gripper& gripper,
+                                                                 bool close) {
   close ? gripper.commandClose() : gripper.commandOpen();
   double gap = gripper.gap();
   double time = world().time();
-  double slowSince = time;
+  double slow_since = time;
   const bool settled = context().stepUntil(
       [&] {
         if (preemptRequested()) return true;
         const double now = world().time();
         if (now <= time) return false;
-        const double nowGap = gripper.gap();
-        if (std::abs(nowGap - gap) >= kSettledRate * (now - time)) slowSince = now;
-        gap = nowGap;
+        const double now_gap = gripper.gap();
+        if (std::abs(now_gap - gap) >= kSettledRate * (now - time)) slow_since = now;
+        gap = now_gap;
         time = now;
-        return now - slowSince >= kSettledTime;
+        return now - slow_since >= kSettledTime;
       },
       args_.timeout);
   if (preemptRequested()) return std::nullopt;
   return outcome(gripper, settled, close);
 }
 
-auto GripperInterfaceState::outcome(const sim::Gripper& gripper, bool settled, bool close)
-    -> sim::GripperResult {
+sim::GripperResult GripperInterfaceState::outcome(const sim::Gripper& gripper, bool settled,
+                                                  bool close) {
   sim::GripperResult result;
   result.gap = gripper.gap();
   if (!settled) return result;
   const auto held = gripper.heldBody();
-  if (close && held) result.heldBody = *held;
-  result.status = !close ? sim::GripperStatus::kOpened
-                  : held ? sim::GripperStatus::kGrasped
-                         : sim::GripperStatus::kClosedEmpty;
+  if (close && held) result.held_body = *held;
+  result.status = !close ? sim::GripperStatus::Opened
+                  : held ? sim::GripperStatus::Grasped
+                         : sim::GripperStatus::ClosedEmpty;
   return result;
 }
 
-auto GripperInterfaceState::judge(const sim::GripperResult& result, bool close) -> std::string {
-  if (result.status == sim::GripperStatus::kTimeout) return abort("the fingers did not settle");
-  if (close && args_.expect_grasp && result.status != sim::GripperStatus::kGrasped) {
+std::string GripperInterfaceState::judge(const sim::GripperResult& result, bool close) {
+  if (result.status == sim::GripperStatus::Timeout) return abort("the fingers did not settle");
+  if (close && args_.expect_grasp && result.status != sim::GripperStatus::Grasped) {
     return abort("the gripper closed on nothing");
   }
   context().snapshot(path());

@@ -7,7 +7,7 @@
 namespace smachac::robot {
 namespace {
 
-auto inputs(const LoadModelArgs& args) -> rt::Keys {
+rt::Keys inputs(const LoadModelArgs& args) {
   rt::Keys keys;
   if (args.pose.isNull()) keys.push_back("pose");
   if (args.reference_frame.empty()) keys.push_back("reference_frame");
@@ -19,18 +19,18 @@ auto inputs(const LoadModelArgs& args) -> rt::Keys {
 LoadModelState::LoadModelState(RobotContext& context, LoadModelArgs args)
     : RobotState(context, inputs(args)), args_(std::move(args)) {}
 
-auto LoadModelState::run(rt::UserData& userdata) -> std::string {
+std::string LoadModelState::run(rt::UserData& userdata) {
   const sim::Pose pose = parseOffset(valueOf(args_.pose, "pose", userdata));
   std::string frame = args_.reference_frame;
   if (frame.empty()) frame = userdata.find("reference_frame").value_or("world").as<std::string>();
   switch (sim::placeBody(world(), args_.model_name, pose, parseFrame(frame))) {
-    case sim::PlaceStatus::kPlaced:
+    case sim::PlaceStatus::Placed:
       return std::string(kSucceeded);
-    case sim::PlaceStatus::kUnknownBody:
+    case sim::PlaceStatus::UnknownBody:
       throw FormatError("the scene has no model `" + args_.model_name + "`");
-    case sim::PlaceStatus::kNotMovable:
+    case sim::PlaceStatus::NotMovable:
       throw FormatError("model `" + args_.model_name + "` cannot be moved");
-    case sim::PlaceStatus::kInvalidPose:
+    case sim::PlaceStatus::InvalidPose:
       break;
   }
   throw FormatError("invalid pose for model `" + args_.model_name + "`");

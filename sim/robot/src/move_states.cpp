@@ -6,7 +6,7 @@
 namespace smachac::robot {
 namespace {
 
-auto inputs(const std::string& limb, const rt::Value& value, const char* key) -> rt::Keys {
+rt::Keys inputs(const std::string& limb, const rt::Value& value, const char* key) {
   rt::Keys keys;
   if (limb.empty()) keys.push_back("limb");
   if (value.isNull()) keys.push_back(key);
@@ -19,7 +19,7 @@ MoveToJointPositionsState::MoveToJointPositionsState(RobotContext& context,
                                                      MoveToJointPositionsArgs args)
     : RobotState(context, inputs(args.limb, args.positions, "positions")), args_(std::move(args)) {}
 
-auto MoveToJointPositionsState::run(rt::UserData& userdata) -> std::string {
+std::string MoveToJointPositionsState::run(rt::UserData& userdata) {
   const sim::Side side = limbOf(args_.limb, userdata);
   const auto goal = parseJointPositions(valueOf(args_.positions, "positions", userdata));
   return moveArm(side, goal, {args_.speed, args_.timeout});
@@ -29,7 +29,7 @@ FollowJointTrajActionState::FollowJointTrajActionState(RobotContext& context,
                                                        FollowJointTrajActionArgs args)
     : RobotState(context, inputs(args.limb, args.points, "points")), args_(std::move(args)) {}
 
-auto FollowJointTrajActionState::run(rt::UserData& userdata) -> std::string {
+std::string FollowJointTrajActionState::run(rt::UserData& userdata) {
   const sim::Side side = limbOf(args_.limb, userdata);
   for (const sim::JointPositions& point :
        parseJointPoints(valueOf(args_.points, "points", userdata))) {

@@ -9,7 +9,7 @@
 namespace smachac::robot {
 namespace {
 
-auto inputs(const PoseToJointTrajServiceArgs& args) -> rt::Keys {
+rt::Keys inputs(const PoseToJointTrajServiceArgs& args) {
   rt::Keys keys;
   if (args.limb.empty()) keys.push_back("limb");
   if (args.poses.isNull()) keys.push_back("poses");
@@ -17,11 +17,11 @@ auto inputs(const PoseToJointTrajServiceArgs& args) -> rt::Keys {
   return keys;
 }
 
-auto describe(const sim::Pose& pose, const sim::IkResult& result) -> std::string {
+std::string describe(const sim::Pose& pose, const sim::IkResult& result) {
   char text[160];
   std::snprintf(text, sizeof text,
                 "no IK solution for (%.3f, %.3f, %.3f): position error %.3f m after %d iterations",
-                pose.position.x, pose.position.y, pose.position.z, result.positionError,
+                pose.position.x, pose.position.y, pose.position.z, result.position_error,
                 result.iterations);
   return text;
 }
@@ -34,14 +34,14 @@ PoseToJointTrajServiceState::PoseToJointTrajServiceState(RobotContext& context,
 
 PoseToJointTrajServiceState::~PoseToJointTrajServiceState() = default;
 
-auto PoseToJointTrajServiceState::run(rt::UserData& userdata) -> std::string {
+std::string PoseToJointTrajServiceState::run(rt::UserData& userdata) {
   const sim::Side side = limbOf(args_.limb, userdata);
   sim::Pose target = parsePose(valueOf(args_.poses, "poses", userdata));
   if (auto offset = optionalValueOf(args_.offsets, "offsets", userdata)) {
     target = applyOffset(target, parseOffset(*offset));
   }
   if (!ik_) ik_ = std::make_unique<sim::Ik>(world());
-  const sim::IkResult result = ik_->solve(side, target, sim::Frame::kBase);
+  const sim::IkResult result = ik_->solve(side, target, sim::Frame::Base);
   if (!result.ok()) return abort(describe(target, result));
   userdata.set("joints", jointsValue(result.joints));
   return std::string(kSucceeded);

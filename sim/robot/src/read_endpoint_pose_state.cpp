@@ -10,9 +10,9 @@ ReadEndpointPoseState::ReadEndpointPoseState(RobotContext& context, ReadEndpoint
     : RobotState(context, args.limb.empty() ? rt::Keys{"limb"} : rt::Keys{}, {"pose"}),
       args_(std::move(args)) {}
 
-auto ReadEndpointPoseState::run(rt::UserData& userdata) -> std::string {
+std::string ReadEndpointPoseState::run(rt::UserData& userdata) {
   const sim::Side side = limbOf(args_.limb, userdata);
-  userdata.set("pose", poseValue(world().limb(side).endpointPose(sim::Frame::kBase)));
+  userdata.set("pose", poseValue(world().limb(side).endpointPose(sim::Frame::Base)));
   return std::string(kSucceeded);
 }
 

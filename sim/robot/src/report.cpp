@@ -12,20 +12,19 @@ namespace {
 
 constexpr const char* kBlocks[] = {"block1", "block2"};
 
-auto fixed(double value, int decimals) -> std::string {
+std::string fixed(double value, int decimals) {
   char text[32];
   std::snprintf(text, sizeof text, "%.*f", decimals, value);
   return text;
 }
 
-auto point(const sim::Vec3& v) -> std::string {
+std::string point(const sim::Vec3& v) {
   return "(" + fixed(v.x, 4) + ", " + fixed(v.y, 4) + ", " + fixed(v.z, 4) + ")";
 }
 
 }  // namespace
 
-auto stackVerdict(const sim::World& world, std::string_view upper, std::string_view lower)
-    -> StackVerdict {
+StackVerdict stackVerdict(const sim::World& world, std::string_view upper, std::string_view lower) {
   StackVerdict verdict{std::string(upper), std::string(lower)};
   const auto top = sim::bodyPose(world, upper);
   const auto bottom = sim::bodyPose(world, lower);
@@ -39,16 +38,16 @@ auto stackVerdict(const sim::World& world, std::string_view upper, std::string_v
   return verdict;
 }
 
-auto sceneReport(const sim::World& world) -> SceneReport {
+SceneReport sceneReport(const sim::World& world) {
   SceneReport report;
   report.time = world.time();
   for (const char* name : kBlocks) {
     if (auto pose = sim::bodyPose(world, name)) report.blocks.push_back({name, pose->position});
   }
   if (report.blocks.size() == 2) {
-    const bool firstHigher = report.blocks[0].centre.z > report.blocks[1].centre.z;
-    const BlockReport& upper = report.blocks[firstHigher ? 0 : 1];
-    const BlockReport& lower = report.blocks[firstHigher ? 1 : 0];
+    const bool first_higher = report.blocks[0].centre.z > report.blocks[1].centre.z;
+    const BlockReport& upper = report.blocks[first_higher ? 0 : 1];
+    const BlockReport& lower = report.blocks[first_higher ? 1 : 0];
     report.stack = stackVerdict(world, upper.name, lower.name);
   }
   report.warnings = world.warnings();

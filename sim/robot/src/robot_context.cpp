@@ -15,22 +15,22 @@ namespace {
 
 constexpr double kStartMoveTimeout = 20.0;  // simulated seconds
 
-auto startJoints(StartPose pose, sim::Side side) -> sim::JointPositions {
-  return pose == StartPose::kNeutral ? sim::neutralPose(side) : sim::untuckPose(side);
+sim::JointPositions startJoints(StartPose pose, sim::Side side) {
+  return pose == StartPose::Neutral ? sim::neutralPose(side) : sim::untuckPose(side);
 }
 
 // Moves both arms at once; false when they do not get there in time.
-auto moveBothArms(sim::World& world, StartPose pose, const sim::MoveOptions& move) -> bool {
-  sim::Limb& left = world.limb(sim::Side::kLeft);
-  sim::Limb& right = world.limb(sim::Side::kRight);
-  if (!left.startMove(startJoints(pose, sim::Side::kLeft), move) ||
-      !right.startMove(startJoints(pose, sim::Side::kRight), move)) {
+bool moveBothArms(sim::World& world, StartPose pose, const sim::MoveOptions& move) {
+  sim::Limb& left = world.limb(sim::Side::Left);
+  sim::Limb& right = world.limb(sim::Side::Right);
+  if (!left.startMove(startJoints(pose, sim::Side::Left), move) ||
+      !right.startMove(startJoints(pose, sim::Side::Right), move)) {
     return false;
   }
   return world.stepUntil([&] { return left.moveDone() && right.moveDone(); }, kStartMoveTimeout);
 }
 
-auto fileLabel(std::string_view label) -> std::string {
+std::string fileLabel(std::string_view label) {
   std::string name(label.empty() ? "root" : label);
   for (char& c : name) {
     if (c == '/' || c == ' ') c = '.';
@@ -45,8 +45,7 @@ RobotContext::RobotContext(std::unique_ptr<sim::World> world, RobotOptions optio
 
 RobotContext::~RobotContext() = default;
 
-auto RobotContext::create(RobotOptions options, std::string& error)
-    -> std::unique_ptr<RobotContext> {
+std::unique_ptr<RobotContext> RobotContext::create(RobotOptions options, std::string& error) {
   sim::LoadResult loaded =
       options.scene.empty() ? sim::World::loadDefault() : sim::World::load(options.scene);
   if (!loaded.world) {
@@ -55,15 +54,14 @@ auto RobotContext::create(RobotOptions options, std::string& error)
   }
   auto context = std::make_unique<RobotContext>(std::move(loaded.world), std::move(options));
   const StartPose start = context->options().start_pose;
-  if (start != StartPose::kNone &&
-      !moveBothArms(context->world(), start, context->options().move)) {
+  if (start != StartPose::None && !moveBothArms(context->world(), start, context->options().move)) {
     error = "the arms did not reach their start pose";
     return nullptr;
   }
   return context;
 }
 
-auto RobotContext::stepUntil(const std::function<bool()>& done, double timeout) -> bool {
+bool RobotContext::stepUntil(const std::function<bool()>& done, double timeout) {
   const double deadline = world_->time() + timeout;
   for (;;) {
     {
@@ -128,12 +126,12 @@ void RobotContext::log(std::string_view path, std::string_view message) {
   if (!options_.quiet) (options_.log ? *options_.log : std::cerr) << line << "\n";
 }
 
-auto RobotContext::messages() const -> std::vector<std::string> {
+std::vector<std::string> RobotContext::messages() const {
   std::lock_guard guard(log_mutex_);
   return messages_;
 }
 
-auto RobotContext::snapshot(std::string_view label) -> std::string {
+std::string RobotContext::snapshot(std::string_view label) {
   if (options_.snapshot_dir.empty()) return "";
   std::unique_lock guard(snapshot_mutex_);
   std::ostringstream path;
@@ -152,7 +150,7 @@ auto RobotContext::snapshot(std::string_view label) -> std::string {
   return path.str();
 }
 
-auto RobotContext::snapshots() const -> std::vector<std::string> {
+std::vector<std::string> RobotContext::snapshots() const {
   std::lock_guard guard(snapshot_mutex_);
   return snapshots_;
 }

@@ -25,23 +25,23 @@ std::string RobotState::execute(rt::UserData& userdata) {
   return run(userdata);
 }
 
-auto RobotState::limbOf(const std::string& variable, rt::UserData& userdata) const -> sim::Side {
+sim::Side RobotState::limbOf(const std::string& variable, rt::UserData& userdata) const {
   return parseLimb(variable.empty() ? userdata.get<std::string>("limb") : variable);
 }
 
-auto RobotState::valueOf(const rt::Value& variable, std::string_view key, rt::UserData& userdata)
-    -> rt::Value {
+rt::Value RobotState::valueOf(const rt::Value& variable, std::string_view key,
+                              rt::UserData& userdata) {
   return variable.isNull() ? userdata.at(key) : variable;
 }
 
-auto RobotState::optionalValueOf(const rt::Value& variable, std::string_view key,
-                                 rt::UserData& userdata) -> std::optional<rt::Value> {
+std::optional<rt::Value> RobotState::optionalValueOf(const rt::Value& variable,
+                                                     std::string_view key, rt::UserData& userdata) {
   if (!variable.isNull()) return variable;
   return userdata.find(key);
 }
 
-auto RobotState::moveArm(sim::Side side, const sim::JointPositions& goal,
-                         const MoveSettings& settings) -> std::string {
+std::string RobotState::moveArm(sim::Side side, const sim::JointPositions& goal,
+                                const MoveSettings& settings) {
   sim::MoveOptions options = context_.options().move;
   options.speed = settings.speed.value_or(options.speed);
   options.timeout = settings.timeout.value_or(options.timeout);
@@ -61,13 +61,13 @@ auto RobotState::moveArm(sim::Side side, const sim::JointPositions& goal,
   return std::string(kSucceeded);
 }
 
-auto RobotState::abort(std::string_view why) -> std::string {
+std::string RobotState::abort(std::string_view why) {
   context_.log(path(), why);
   context_.snapshot(path());
   return std::string(kAborted);
 }
 
-auto RobotState::preempted() -> std::string {
+std::string RobotState::preempted() {
   servicePreempt();
   context_.log(path(), "preempted");
   return std::string(rt::kPreempted);

@@ -24,7 +24,7 @@ struct SmachacSimWorld {
   std::unique_ptr<sim::World> world;
   std::unique_ptr<sim::Ik> ik;
   std::unique_ptr<sim::Snapshotter> snapshotter;
-  std::array<std::array<std::string, sim::kArmJointCount>, 2> jointNames;
+  std::array<std::array<std::string, sim::kArmJointCount>, 2> joint_names;
   std::array<std::array<int, sim::kArmJointCount>, 2> actuators;  // a joint's servo, or -1
   std::array<std::array<int, sim::kArmJointCount>, 2> dofs;       // a joint's dof, or -1
 };
@@ -33,10 +33,10 @@ namespace {
 
 constexpr double kMaxFingerForce = 20.0;  // N, the finger servos' limit
 
-auto sideOf(int side) -> sim::Side { return side == 1 ? sim::Side::kRight : sim::Side::kLeft; }
+sim::Side sideOf(int side) { return side == 1 ? sim::Side::Right : sim::Side::Left; }
 
 // Writes `text` into a caller's buffer (NUL-terminated, cut to fit); returns its length.
-auto copyOut(const std::string& text, char* buffer, int size) -> int {
+int copyOut(const std::string& text, char* buffer, int size) {
   if (buffer != nullptr && size > 0) {
     const size_t length = std::min(text.size(), static_cast<size_t>(size - 1));
     std::memcpy(buffer, text.data(), length);
@@ -45,7 +45,7 @@ auto copyOut(const std::string& text, char* buffer, int size) -> int {
   return static_cast<int>(text.size());
 }
 
-auto poseFrom(const double values[7]) -> sim::Pose {
+sim::Pose poseFrom(const double values[7]) {
   return {{values[0], values[1], values[2]}, {values[6], values[3], values[4], values[5]}};
 }
 
@@ -61,7 +61,7 @@ void arrayTo(const sim::JointPositions& joints, double values[7]) {
 }
 
 // The TCP's linear and angular velocity in the world frame, from the site Jacobian.
-auto endpointTwist(const sim::World& world, sim::Side side) -> std::array<double, 6> {
+std::array<double, 6> endpointTwist(const sim::World& world, sim::Side side) {
   auto guard = world.lock();
   const mjModel* model = world.model();
   const mjData* data = world.data();
@@ -80,8 +80,8 @@ auto endpointTwist(const sim::World& world, sim::Side side) -> std::array<double
 extern "C" {
 
 SmachacSimWorld* smachac_sim_open(const char* scene_path, char* error, int error_size) {
-  const bool useDefault = scene_path == nullptr || *scene_path == '\0';
-  sim::LoadResult loaded = useDefault ? sim::World::loadDefault() : sim::World::load(scene_path);
+  const bool use_default = scene_path == nullptr || *scene_path == '\0';
+  sim::LoadResult loaded = use_default ? sim::World::loadDefault() : sim::World::load(scene_path);
   if (!loaded.world) {
     copyOut(loaded.error, error, error_size);
     return nullptr;
@@ -91,9 +91,9 @@ SmachacSimWorld* smachac_sim_open(const char* scene_path, char* error, int error
   handle->ik = std::make_unique<sim::Ik>(*handle->world);
   const mjModel* model = handle->world->model();
   for (size_t side = 0; side < 2; ++side) {
-    handle->jointNames[side] = handle->world->limb(sideOf(static_cast<int>(side))).jointNames();
+    handle->joint_names[side] = handle->world->limb(sideOf(static_cast<int>(side))).jointNames();
     for (size_t i = 0; i < sim::kArmJointCount; ++i) {
-      const char* name = handle->jointNames[side][i].c_str();
+      const char* name = handle->joint_names[side][i].c_str();
       handle->actuators[side][i] = mj_name2id(model, mjOBJ_ACTUATOR, name);
       const int joint = mj_name2id(model, mjOBJ_JOINT, name);
       handle->dofs[side][i] = joint < 0 ? -1 : model->jnt_dofadr[joint];
@@ -114,8 +114,8 @@ double smachac_sim_time(const SmachacSimWorld* world) { return world->world->tim
 double smachac_sim_timestep(const SmachacSimWorld* world) { return world->world->timestep(); }
 
 void smachac_sim_joint_names(const SmachacSimWorld* world, int side, const char* names[7]) {
-  const auto& sideNames = world->jointNames[side == 1 ? 1 : 0];
-  for (size_t i = 0; i < sideNames.size(); ++i) names[i] = sideNames[i].c_str();
+  const auto& side_names = world->joint_names[side == 1 ? 1 : 0];
+  for (size_t i = 0; i < side_names.size(); ++i) names[i] = side_names[i].c_str();
 }
 
 void smachac_sim_joint_state(const SmachacSimWorld* world, int side, double position[7],
@@ -143,13 +143,13 @@ int smachac_sim_command_positions(SmachacSimWorld* world, int side, const double
 
 void smachac_sim_endpoint(const SmachacSimWorld* world, int side, double pose[7], double twist[6]) {
   const sim::World& w = *world->world;
-  poseTo(w.limb(sideOf(side)).endpointPose(sim::Frame::kBase), pose);
+  poseTo(w.limb(sideOf(side)).endpointPose(sim::Frame::Base), pose);
   const auto velocity = endpointTwist(w, sideOf(side));
   std::copy(velocity.begin(), velocity.end(), twist);  // the base frame is not rotated
 }
 
 int smachac_sim_solve_ik(SmachacSimWorld* world, int side, const double pose[7], double joints[7]) {
-  const sim::IkResult result = world->ik->solve(sideOf(side), poseFrom(pose), sim::Frame::kBase);
+  const sim::IkResult result = world->ik->solve(sideOf(side), poseFrom(pose), sim::Frame::Base);
   arrayTo(result.joints, joints);
   return result.ok() ? 1 : 0;
 }
@@ -169,12 +169,12 @@ void smachac_sim_gripper_state(const SmachacSimWorld* world, int side, double* p
 
 int smachac_sim_place_body(SmachacSimWorld* world, const char* name, const double pose[7],
                            int frame) {
-  const sim::Frame where = frame == 1 ? sim::Frame::kWorld : sim::Frame::kBase;
+  const sim::Frame where = frame == 1 ? sim::Frame::World : sim::Frame::Base;
   return static_cast<int>(sim::placeBody(*world->world, name, poseFrom(pose), where));
 }
 
 int smachac_sim_body_pose(const SmachacSimWorld* world, const char* name, double pose[7]) {
-  const auto found = sim::bodyPose(*world->world, name, sim::Frame::kBase);
+  const auto found = sim::bodyPose(*world->world, name, sim::Frame::Base);
   if (!found) return 0;
   poseTo(*found, pose);
   return 1;

@@ -1,15 +1,23 @@
-// The threads a Concurrence runs its children on, started at its first execution and kept
-// for the next ones: a Concurrence in a loop starts no thread per child per execution (SMACH
-// does; it was most of the time of a fan-out). Child 0 runs on the calling thread, child i on
-// worker i; run() returns when every child has returned.
+// The threads a Concurrence runs its children on, started at its first execution and kept for
+// the next ones (SMACH starts a thread per child per execution).
+//
+// Children are taken in order, each by one thread: the calling thread takes child 0, then the
+// next child nobody has taken, and so on; the workers take children the same way. A run wakes
+// one worker, and a worker that takes a child while others still wait to be taken wakes the
+// next worker. So children that return quickly run one after another on the calling thread
+// without a thread switch (which costs more than such a child), while a child that blocks
+// never keeps another from starting: every child not yet taken has a worker on its way to it.
+// run() returns when every child has returned.
 #pragma once
 
-#include <condition_variable>
+#include <atomic>
+#include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <functional>
-#include <mutex>
 #include <thread>
-#include <vector>
+
+#include "smachac/runtime/light_mutex.h"
 
 namespace smachac::runtime {
 
@@ -20,23 +28,33 @@ class ChildWorkers {
   ChildWorkers(const ChildWorkers&) = delete;
   ChildWorkers& operator=(const ChildWorkers&) = delete;
 
-  /// Runs task(0) here and task(1) ... task(n - 1) on the workers, at the same time; `task`
+  /// Runs task(0) ... task(n - 1), each once, at the same time as far as they block; `task`
   /// must not throw. Throws std::system_error, before any task runs, when a worker cannot be
   /// started.
   void run(std::size_t n, const std::function<void(std::size_t)>& task);
 
  private:
-  void work(std::size_t index, uint64_t seen);
+  struct Worker {
+    std::atomic<uint32_t> wakes{0};  ///< bumped to wake it
+    std::thread thread;
+  };
 
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  std::condition_variable done_;
-  std::vector<std::thread> threads_;
+  void startWorkers(std::size_t count);
+  /// Takes and runs children until none is left; `wake_next`: wake a worker when one is.
+  void drain(bool wake_next);
+  /// The worker to wake next in this run, or null when every one was woken. Under mutex_.
+  Worker* nextToWakeLocked();
+  static void wake(Worker& worker);
+  void work(Worker& self);
+
+  LightMutex mutex_;  ///< guards task_, children_, next_, woken_
   const std::function<void(std::size_t)>* task_ = nullptr;
-  uint64_t generation_ = 0;   ///< one per run()
-  std::size_t children_ = 0;  ///< of the current run()
-  std::size_t pending_ = 0;   ///< workers of the current run() still running
-  bool stop_ = false;
+  std::size_t children_ = 0;  ///< of the current run
+  std::size_t next_ = 0;      ///< the next child to take
+  std::size_t woken_ = 0;     ///< workers woken in the current run
+  std::atomic<std::size_t> unfinished_{0};
+  std::atomic<bool> stop_{false};
+  std::deque<Worker> workers_;  ///< a deque: workers never move
 };
 
 }  // namespace smachac::runtime

@@ -132,7 +132,10 @@ void Concurrence::runAll() {
 
 void Concurrence::runOne(std::size_t index) {
   try {
-    std::string outcome = runChild(children()[index]);
+    Child& child = children()[index];
+    std::string outcome;
+    int position = runChild(child, outcome);
+    if (position >= 0) outcome = child.state->outcomes()[static_cast<std::size_t>(position)];
     childDone(index, std::move(outcome), nullptr);
   } catch (...) {
     childDone(index, std::nullopt, std::current_exception());

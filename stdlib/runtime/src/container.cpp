@@ -86,33 +86,33 @@ void Container::collectCommonProblems(std::vector<std::string>& problems) const 
   }
 }
 
-std::string Container::runChild(Child& child) {
+int Container::runChild(Child& child, std::string& other) {
   TraceSink* sink = traceSink();
-  const std::string& path = child.state->path();
+  State& state = *child.state;
   child.view.trackWrites(sink != nullptr);
-  if (sink != nullptr) sink->write({.kind = TraceKind::Enter, .state = path});
-  std::string outcome;
+  if (sink != nullptr) sink->write({.kind = TraceKind::Enter, .state = state.path()});
+  int position = -1;
   try {
-    outcome = child.state->execute(child.view);
+    position = state.executeAt(child.view, other);
   } catch (const ExecutionError&) {
     throw;
   } catch (const ConsistencyError&) {
     throw;
   } catch (const Error& e) {
-    fail(*child.state, e.what());
+    fail(state, e.what());
   } catch (const std::exception& e) {
-    fail(*child.state, "state " + backticked(child.state->displayName()) + " failed: " + e.what());
+    fail(state, "state " + backticked(state.displayName()) + " failed: " + e.what());
   } catch (...) {
-    fail(*child.state,
-         "state " + backticked(child.state->displayName()) + " failed: unknown exception");
+    fail(state, "state " + backticked(state.displayName()) + " failed: unknown exception");
   }
   if (sink != nullptr) {
-    sink->write({.kind = TraceKind::Exit,
-                 .state = path,
-                 .outcome = outcome,
-                 .written = &child.view.written()});
+    sink->write(
+        {.kind = TraceKind::Exit,
+         .state = state.path(),
+         .outcome = position >= 0 ? state.outcomes()[static_cast<std::size_t>(position)] : other,
+         .written = &child.view.written()});
   }
-  return outcome;
+  return position;
 }
 
 void Container::fail(const State& who, const std::string& message) const {

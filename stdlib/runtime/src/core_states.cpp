@@ -54,7 +54,15 @@ std::mutex& printMutex() {
 }  // namespace
 
 void runCallbacks(const Callbacks& callbacks, UserData& userdata) {
-  for (const auto& [key, callback] : callbacks) userdata.set(key, callback(userdata));
+  for (const auto& entry : callbacks) {
+    userdata.set(entry.key, entry.position, entry.callback(userdata));
+  }
+}
+
+void placeCallbacks(Callbacks& callbacks, const Keys& output_keys) {
+  for (KeyedCallback& entry : callbacks) {
+    entry.position = static_cast<std::size_t>(indexIn(output_keys, entry.key));
+  }
 }
 
 void setRandomSeed(std::optional<uint64_t> seed) {
@@ -70,13 +78,22 @@ std::optional<uint64_t> randomSeed() {
 // --- CallbacksState --------------------------------------------------------------------------
 
 CallbacksState::CallbacksState(StateSpec spec, Callbacks callbacks)
-    : State(withDefaultOutcome(std::move(spec))), callbacks_(std::move(callbacks)) {
+    : State(withDefaultOutcome(std::move(spec))),
+      callbacks_(std::move(callbacks)),
+      succeeded_(indexIn(outcomes(), kSucceeded)) {
   for (const auto& entry : callbacks_) addOutputKey(entry.key);
+  placeCallbacks(callbacks_, outputKeys());
 }
 
 std::string CallbacksState::execute(UserData& userdata) {
   runCallbacks(callbacks_, userdata);
   return kSucceeded;
+}
+
+int CallbacksState::executeAt(UserData& userdata, std::string& other) {
+  runCallbacks(callbacks_, userdata);
+  if (succeeded_ < 0) other = kSucceeded;
+  return succeeded_;
 }
 
 // --- PrintUserdataState ----------------------------------------------------------------------
@@ -101,6 +118,7 @@ RandomOutcomeState::RandomOutcomeState(StateSpec spec, Callbacks callbacks,
     : State(withDefaultOutcome(std::move(spec))), callbacks_(std::move(callbacks)), seed_(seed) {
   addOutputKey(kOutcomeKey);
   for (const auto& entry : callbacks_) addOutputKey(entry.key);
+  placeCallbacks(callbacks_, outputKeys());
 }
 
 std::string RandomOutcomeState::execute(UserData& userdata) {
@@ -137,23 +155,33 @@ ConditionalOutcomeState::ConditionalOutcomeState(StateSpec spec, Callbacks callb
   }
   addOutputKey(kOutcomeKey);
   for (const auto& entry : callbacks_) addOutputKey(entry.key);
+  placeCallbacks(callbacks_, outputKeys());
+  for (std::size_t i = 0; i + 1 < outcomes().size(); ++i) {
+    conditions_.push_back(static_cast<std::size_t>(indexIn(inputKeys(), outcomes()[i])));
+  }
+  outcome_key_ = static_cast<std::size_t>(indexIn(outputKeys(), kOutcomeKey));
+  choices_.assign(outcomes().begin(), outcomes().end());
 }
 
 // As the template's class: a condition whose key is not set (no callback wrote it, nothing
 // else set it) is skipped, and the choice, `default` included, is written to `outcome`.
 std::string ConditionalOutcomeState::execute(UserData& userdata) {
+  std::string other;
+  return outcomes()[static_cast<std::size_t>(executeAt(userdata, other))];
+}
+
+int ConditionalOutcomeState::executeAt(UserData& userdata, std::string& /*other*/) {
   runCallbacks(callbacks_, userdata);
-  std::string chosen = kDefault;
-  for (const std::string& outcome : outcomes()) {
-    if (outcome == kDefault) break;
-    std::optional<Value> condition = userdata.find(outcome);
+  std::size_t chosen = conditions_.size();  // `default`, the last outcome
+  for (std::size_t i = 0; i < conditions_.size(); ++i) {
+    std::optional<Value> condition = userdata.find(outcomes()[i], conditions_[i]);
     if (condition && condition->truthy()) {
-      chosen = outcome;
+      chosen = i;
       break;
     }
   }
-  userdata.set(kOutcomeKey, chosen);
-  return chosen;
+  userdata.set(kOutcomeKey, outcome_key_, choices_[chosen]);
+  return static_cast<int>(chosen);
 }
 
 // --- LogState --------------------------------------------------------------------------------

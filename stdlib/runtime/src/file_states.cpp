@@ -71,6 +71,7 @@ std::string csvRow(const std::vector<std::string>& fields, const std::string& de
 DeleteFileState::DeleteFileState(StateSpec spec, Callbacks callbacks)
     : State(withFileKeys(std::move(spec), {"file"})), callbacks_(std::move(callbacks)) {
   for (const auto& entry : callbacks_) addOutputKey(entry.key);
+  placeCallbacks(callbacks_, outputKeys());
 }
 
 std::string DeleteFileState::execute(UserData& userdata) {
@@ -88,6 +89,7 @@ WriteCSVFileState::WriteCSVFileState(std::string delimiter, StateSpec spec, Call
       delimiter_(std::move(delimiter)),
       callbacks_(std::move(callbacks)) {
   for (const auto& entry : callbacks_) addOutputKey(entry.key);
+  placeCallbacks(callbacks_, outputKeys());
 }
 
 std::vector<std::string> WriteCSVFileState::row(UserData& userdata) const {

@@ -28,12 +28,17 @@ bool State::hasOutcome(std::string_view outcome) const { return contains(outcome
 bool State::declaresInput(std::string_view key) const { return contains(input_keys_, key); }
 bool State::declaresOutput(std::string_view key) const { return contains(output_keys_, key); }
 
+int State::executeAt(UserData& userdata, std::string& other) {
+  other = execute(userdata);
+  return indexIn(outcomes_, other);
+}
+
 std::string State::displayName() const { return path_.empty() ? "root" : path_; }
 
 void State::requestPreempt() {
   {
     std::lock_guard lock(wait_mutex_);
-    preempt_.store(true, std::memory_order_release);
+    preempt_.store(true);  // sequentially consistent: see preemptRequested()
   }
   wait_cv_.notify_all();
   if (TraceSink* sink = traceSink()) sink->write({.kind = TraceKind::Preempt, .state = path_});

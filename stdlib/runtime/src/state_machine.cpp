@@ -5,7 +5,13 @@
 // usual. Before the next child starts, a request the last child serviced (its flag is clear)
 // is done with; one it ignored is taken back from it and passed on to the next child. At a
 // terminal outcome the machine services its own request when its last child did. mutex_
-// guards current_ and preempted_ against requestPreempt() from other threads.
+// guards preempted_ against requestPreempt() from other threads.
+//
+// Entering a child takes no lock while no request is pending: the machine publishes current_
+// and then reads its request flag, requestPreempt() sets the flag and then reads current_,
+// all four sequentially consistent. So at least one of them sees the other: either the
+// requester preempts the new child, or the machine sees the request and handles it under
+// mutex_ (preemptCurrentLocked() does nothing the second time for the same child).
 #include "smachac/runtime/state_machine.h"
 
 #include <mutex>
@@ -19,7 +25,9 @@ StateMachine::StateMachine(StateMachineSpec spec)
     : Container({.outcomes = std::move(spec.outcomes),
                  .input_keys = std::move(spec.input_keys),
                  .output_keys = std::move(spec.output_keys)},
-                std::move(spec.userdata)) {}
+                std::move(spec.userdata)) {
+  userdata().setShared(false);  // its children run one at a time
+}
 
 std::string StateMachine::kindAndName() const {
   return "state machine " + backticked(displayName());
@@ -82,15 +90,15 @@ std::string StateMachine::execute(UserData& parent) {
 std::string StateMachine::runFrom(std::size_t index) {
   for (;;) {
     enterChild(static_cast<int>(index));
-    std::string outcome;
+    int position = -1;
     try {
-      outcome = runChild(children()[index]);
+      position = runChild(children()[index], other_);
     } catch (...) {
       finishRun(index);
       throw;
     }
-    Target target = resolve(index, outcome);
-    emitTransition(index, outcome, target);
+    Target target = resolve(index, position);
+    emitTransition(index, position, target);
     if (target < 0) {
       finishRun(index);
       return outcomes()[static_cast<std::size_t>(~target)];
@@ -100,9 +108,9 @@ std::string StateMachine::runFrom(std::size_t index) {
 }
 
 void StateMachine::enterChild(int index) {
-  std::lock_guard lock(mutex_);
-  current_ = index;
+  current_.store(index);
   if (!preemptRequested()) return;
+  std::lock_guard lock(mutex_);
   if (preempted_ >= 0 && !childAt(preempted_).preemptRequested()) {
     State::servicePreempt();  // the last preempted child serviced the request
     preempted_ = -1;
@@ -125,38 +133,37 @@ void StateMachine::finishRun(std::size_t last) {
 void StateMachine::requestPreempt() {
   std::lock_guard lock(mutex_);
   State::requestPreempt();
-  if (current_ >= 0) preemptCurrentLocked();
+  if (current_.load() >= 0) preemptCurrentLocked();
 }
 
 void StateMachine::preemptCurrentLocked() {
-  if (preempted_ == current_) return;
+  int current = current_.load();
+  if (current < 0 || preempted_ == current) return;
   if (preempted_ >= 0) childAt(preempted_).recallPreempt();
-  preempted_ = current_;
-  childAt(current_).requestPreempt();
+  preempted_ = current;
+  childAt(current).requestPreempt();
 }
 
 State& StateMachine::childAt(int index) {
   return *children()[static_cast<std::size_t>(index)].state;
 }
 
-StateMachine::Target StateMachine::resolve(std::size_t index, const std::string& outcome) const {
-  const State& state = *children()[index].state;
-  int position = indexIn(state.outcomes(), outcome);
+StateMachine::Target StateMachine::resolve(std::size_t index, int position) const {
   if (position >= 0) return table_[index][static_cast<std::size_t>(position)];
-  std::string message = "state " + backticked(state.displayName()) + " returned outcome " +
-                        backticked(outcome) + ", which is not one of its outcomes";
-  fail(state, message);
+  const State& state = *children()[index].state;
+  fail(state, "state " + backticked(state.displayName()) + " returned outcome " +
+                  backticked(other_) + ", which is not one of its outcomes");
 }
 
-void StateMachine::emitTransition(std::size_t index, const std::string& outcome,
-                                  Target target) const {
+void StateMachine::emitTransition(std::size_t index, int position, Target target) const {
   if (traceSink() == nullptr) return;
+  const State& state = *children()[index].state;
   bool terminal = target < 0;
   const std::string& to = terminal ? outcomes()[static_cast<std::size_t>(~target)]
                                    : children()[static_cast<std::size_t>(target)].label;
   emit({.kind = TraceKind::Transition,
-        .state = children()[index].state->path(),
-        .outcome = outcome,
+        .state = state.path(),
+        .outcome = state.outcomes()[static_cast<std::size_t>(position)],
         .target = to,
         .terminal = terminal});
 }

@@ -23,36 +23,22 @@ std::string keyList(const Keys& keys) {
 
 // --- UserDataStore ---------------------------------------------------------------------------
 
-void UserDataStore::set(std::string_view key, Value value) {
-  std::lock_guard lock(mutex_);
-  auto it = values_.find(key);
-  if (it != values_.end()) {
-    it->second = std::move(value);
-  } else {
-    values_.emplace(std::string(key), std::move(value));
-  }
-}
+void UserDataStore::set(std::string_view key, Value value) { assign(key, std::move(value)); }
 
 void UserDataStore::setText(std::string_view key, const char* text) { set(key, Value(text)); }
 
-std::optional<Value> UserDataStore::findAt(std::string_view key, Value*& entry) {
+Value* UserDataStore::entryOf(std::string_view key) {
   std::lock_guard lock(mutex_);
-  if (entry == nullptr) {
-    auto it = values_.find(key);
-    if (it == values_.end()) return std::nullopt;
-    entry = &it->second;
-  }
-  return *entry;
+  auto it = values_.find(key);
+  return it == values_.end() ? nullptr : &it->second;
 }
 
-void UserDataStore::setAt(std::string_view key, Value*& entry, Value&& value) {
+Value& UserDataStore::assign(std::string_view key, Value&& value) {
   std::lock_guard lock(mutex_);
-  if (entry == nullptr) {
-    auto it = values_.find(key);
-    if (it == values_.end()) it = values_.emplace(std::string(key), Value()).first;
-    entry = &it->second;
-  }
-  *entry = std::move(value);
+  auto it = values_.find(key);
+  if (it == values_.end()) return values_.emplace(std::string(key), std::move(value)).first->second;
+  it->second = std::move(value);
+  return it->second;
 }
 
 std::optional<Value> UserDataStore::find(std::string_view key) const {
@@ -102,38 +88,54 @@ std::string_view UserData::remap(std::string_view key) const {
   return key;
 }
 
-UserData::Slot& UserData::slot(std::string_view key) const {
-  for (Slot& slot : slots_) {
-    if (slot.key == key) return slot;
+UserData::Slot& UserData::slotAt(std::vector<Slot>& slots, std::size_t count, std::size_t position,
+                                 std::string_view key) const {
+  if (slots.size() != count) slots.resize(count);  // the first use: a slot per declared key
+  Slot& slot = slots[position];
+  if (!slot.resolved) {
+    slot.key = std::string(key);
+    slot.target = std::string(remap(key));
+    slot.resolved = true;
   }
-  return slots_.emplace_back(Slot{.key = std::string(key), .target = std::string(remap(key))});
+  return slot;
 }
 
-void UserData::checkInput(std::string_view key) const {
-  if (state_->declaresInput(key)) return;
-  throw UserDataError("state " + backticked(state_->displayName()) +
-                      " reads undeclared userdata key " + backticked(key) +
-                      " (input keys: " + keyList(state_->inputKeys()) + ")");
-}
-
-void UserData::checkOutput(std::string_view key) const {
-  if (state_->declaresOutput(key)) return;
-  throw UserDataError("state " + backticked(state_->displayName()) +
-                      " writes undeclared userdata key " + backticked(key) +
-                      " (output keys: " + keyList(state_->outputKeys()) + ")");
-}
-
-std::optional<Value> UserData::find(std::string_view key) const {
-  Slot& resolved = slot(key);
-  if (!resolved.readable) {
-    checkInput(key);
-    resolved.readable = true;
+UserData::Slot& UserData::inputSlot(std::string_view key, std::size_t position) const {
+  const Keys& keys = state_->inputKeys();
+  if (position >= keys.size() || keys[position] != key) {
+    int found = indexIn(keys, key);
+    if (found < 0) undeclared(key, false);
+    position = static_cast<std::size_t>(found);
   }
-  return store_->findAt(resolved.target, resolved.entry);
+  return slotAt(inputs_, keys.size(), position, key);
 }
 
-Value UserData::at(std::string_view key) const {
-  std::optional<Value> value = find(key);
+UserData::Slot& UserData::outputSlot(std::string_view key, std::size_t position) const {
+  const Keys& keys = state_->outputKeys();
+  if (position >= keys.size() || keys[position] != key) {
+    int found = indexIn(keys, key);
+    if (found < 0) undeclared(key, true);
+    position = static_cast<std::size_t>(found);
+  }
+  return slotAt(outputs_, keys.size(), position, key);
+}
+
+void UserData::undeclared(std::string_view key, bool write) const {
+  throw UserDataError("state " + backticked(state_->displayName()) +
+                      (write ? " writes" : " reads") + " undeclared userdata key " +
+                      backticked(key) + (write ? " (output keys: " : " (input keys: ") +
+                      keyList(write ? state_->outputKeys() : state_->inputKeys()) + ")");
+}
+
+std::optional<Value> UserData::findFirst(std::string_view key, std::size_t position) const {
+  Slot& slot = inputSlot(key, position);
+  if (slot.entry == nullptr) slot.entry = store_->entryOf(slot.target);
+  if (slot.entry == nullptr) return std::nullopt;
+  return store_->load(*slot.entry);
+}
+
+Value UserData::atFirst(std::string_view key, std::size_t position) const {
+  std::optional<Value> value = findFirst(key, position);
   if (value) return std::move(*value);
   std::string_view target = remap(key);
   std::string remapped = target == key ? "" : " (remapped to " + backticked(target) + ")";
@@ -141,24 +143,18 @@ Value UserData::at(std::string_view key) const {
                       backticked(key) + remapped + ", which is not set");
 }
 
-void UserData::set(std::string_view key, Value value) {
-  Slot& resolved = slot(key);
-  if (!resolved.writable) {
-    checkOutput(key);
-    resolved.writable = true;
+void UserData::setFirst(std::string_view key, std::size_t position, Value value) {
+  Slot& slot = outputSlot(key, position);
+  if (slot.entry == nullptr) {
+    slot.entry = &store_->assign(slot.target, std::move(value));
+  } else {
+    store_->store(*slot.entry, std::move(value));
   }
-  store_->setAt(resolved.target, resolved.entry, std::move(value));
-  const std::string& target = resolved.target;
+  const std::string& target = slot.target;
   if (tracking_ && std::find(written_.begin(), written_.end(), target) == written_.end()) {
     written_.push_back(target);
   }
 }
-
-void UserData::trackWrites(bool on) {
-  tracking_ = on;
-  written_.clear();
-}
-
 std::string UserData::typeMessage(std::string_view key, const TypeError& e) const {
   return "state " + backticked(state_->displayName()) + " reads userdata key " + backticked(key) +
          " as " + e.expected() + ", but it holds " + e.actual();

@@ -111,17 +111,7 @@ bool operator==(const Value& a, const Value& b) {
   }
 }
 
-template <>
-bool Value::as<bool>() const {
-  if (type() != ValueType::Bool) throw TypeError("a bool", describe());
-  return std::get<bool>(data_);
-}
-
-template <>
-int64_t Value::as<int64_t>() const {
-  if (type() != ValueType::Int) throw TypeError("an int", describe());
-  return std::get<int64_t>(data_);
-}
+void Value::mismatch(const char* expected) const { throw TypeError(expected, describe()); }
 
 template <>
 int Value::as<int>() const {
@@ -130,13 +120,6 @@ int Value::as<int>() const {
     throw TypeError("a 32-bit int", "an int out of range (" + std::to_string(i) + ")");
   }
   return static_cast<int>(i);
-}
-
-template <>
-double Value::as<double>() const {
-  if (type() == ValueType::Int) return static_cast<double>(std::get<int64_t>(data_));
-  if (type() != ValueType::Double) throw TypeError("a double", describe());
-  return std::get<double>(data_);
 }
 
 template <>

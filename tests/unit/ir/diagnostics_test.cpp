@@ -12,7 +12,7 @@ TEST_CASE("messages are formatted from the registry") {
   smachac::SourceManager sources;
   uint32_t f = sources.addFile("s.yml", "name: x\n  key: value\n");
   diags.emit<DiagKind::DuplicateKey>({f, 2, 3, 3}, "key");
-  diags.note({f, 1, 1, 4}, "first defined here");
+  diags.note<smachac::DiagNoteKind::FirstDefinedHere>({f, 1, 1, 4});
   REQUIRE(diags.diagnostics().size() == 1);
   CHECK(diags.hasErrors());
   CHECK(smachac::formatDiagnosticText(diags.diagnostics()[0], sources) ==
@@ -28,7 +28,7 @@ TEST_CASE("carets follow tabs and multi-byte characters") {
   smachac::DiagnosticEmitter diags;
   smachac::SourceManager sources;
   uint32_t f = sources.addFile("s.yml", "\tcafé: OPNE\n");
-  diags.emit<DiagKind::YamlSyntax>({f, 1, 9, 4}, "something");
+  diags.emit<DiagKind::YamlSyntax>({f, 1, 9, 4}, smachac::ForeignMessage("something"));
   CHECK(smachac::formatDiagnosticText(diags.diagnostics()[0], sources) ==
         "s.yml:1:9: error: something [yaml-syntax]\n\tcafé: OPNE\n\t      ^~~~\n");
 }
@@ -81,7 +81,35 @@ TEST_CASE("silenced diagnostics drop their notes") {
   CHECK_FALSE(options.apply("-Wno-unknown-root-key").has_value());
   smachac::DiagnosticEmitter diags(options);
   diags.emit<DiagKind::UnknownRootKey>({}, "x", "");
-  diags.note({}, "ignored");
+  diags.note<smachac::DiagNoteKind::FirstDefinedHere>({});
   CHECK(diags.diagnostics().empty());
   CHECK(diags.warningCount() == 0);
+}
+
+TEST_CASE("notes are formatted from the registry, with their arguments") {
+  smachac::DiagnosticEmitter diags;
+  diags.emit<DiagKind::SubScriptNotFound>({}, "sub");
+  diags.note<smachac::DiagNoteKind::LookedFor>({}, std::string("sub.yml"));
+  diags.note<smachac::DiagNoteKind::WhileRenderingTemplate>({}, "T", "S");
+  REQUIRE(diags.diagnostics().size() == 1);
+  const std::vector<smachac::DiagNote>& notes = diags.diagnostics()[0].notes;
+  REQUIRE(notes.size() == 2);
+  CHECK(notes[0].message == "looked for `sub.yml`");
+  CHECK(notes[1].message == "while rendering template `T` for `S`");
+  CHECK(smachac::makeNote<smachac::DiagNoteKind::IncludedFromHere>({}).message ==
+        "included from here");
+}
+
+TEST_CASE("choices print their registry text; a numbered one fills in its number") {
+  smachac::DiagnosticEmitter diags;
+  diags.emit<DiagKind::YamlTooComplex>({}, smachac::Numbered{smachac::YamlLimit::Depth, 1000});
+  diags.emit<DiagKind::YamlTooComplex>({}, smachac::Numbered{smachac::YamlLimit::ParserDepth, 7});
+  diags.note<smachac::DiagNoteKind::LikelyYamlMistake>({}, smachac::YamlSyntaxHint::CloseMapping);
+  diags.emit<DiagKind::InvalidEncoding>({}, smachac::EncodingProblem::NulByte);
+  REQUIRE(diags.diagnostics().size() == 3);
+  CHECK(diags.diagnostics()[0].message == "YAML nested more than 1000 levels deep");
+  CHECK(diags.diagnostics()[1].message == "YAML nested too deeply for the parser");
+  CHECK(diags.diagnostics()[1].notes[0].message ==
+        "a `{` mapping is not closed: add its `}`, also when the mapping spans several lines");
+  CHECK(diags.diagnostics()[2].message == "NUL byte in YAML text");
 }

@@ -51,7 +51,7 @@ class Editor {
 
 using Labels = std::vector<std::string>;
 
-const char* kScript = R"(name: s
+constexpr const char* kScript = R"(name: s
 template: Base
 outcomes: [finished, failed]
 userdata: {limit: 3}

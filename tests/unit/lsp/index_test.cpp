@@ -1,7 +1,7 @@
 // The script index (lsp/script_index.h): userdata keys across container interfaces and
 // remapping, the roles of writes, params resolved to the nearest entry, positions, documents
 // that do not parse, sub-scripts; and what hover and definition read about templates
-// (lsp/index_templates.h, backends/template_help.h): cache copies, user templates, markdown.
+// (lsp/index_templates.h, backends/meta/template_help.h): cache copies, user templates, markdown.
 #include <doctest/doctest.h>
 
 #include <sys/stat.h>
@@ -13,8 +13,8 @@
 #include <optional>
 #include <sstream>
 
-#include "backends/template_help.h"
-#include "backends/tmpl/value_convert.h"
+#include "backends/meta/template_help.h"
+#include "backends/tmpl/values/value_convert.h"
 #include "ir/support/version.h"
 #include "lsp/analysis.h"
 #include "lsp/index_templates.h"

@@ -32,7 +32,7 @@ std::string word(const Probe& probe) {
   return probe.text.substr(c.word_begin, c.word_end - c.word_begin);
 }
 
-const char* kState = "name: s\nstates:\n  - PICK:\n      template: X\n";
+constexpr const char* kState = "name: s\nstates:\n  - PICK:\n      template: X\n";
 
 }  // namespace
 

@@ -13,18 +13,18 @@ namespace smachac::sim {
 class World;
 
 enum class PlaceStatus {
-  kPlaced,
-  kUnknownBody,  ///< no body of that name
-  kNotMovable,   ///< the body has neither a free joint nor a mocap frame
-  kInvalidPose,  ///< non-finite values or a zero quaternion
+  Placed,
+  UnknownBody,  ///< no body of that name
+  NotMovable,   ///< the body has neither a free joint nor a mocap frame
+  InvalidPose,  ///< non-finite values or a zero quaternion
 };
 
 /// Puts body `name` at `pose` (given in `frame`) at rest. For a block the pose is its centre.
-auto placeBody(World& world, std::string_view name, const Pose& pose, Frame frame = Frame::kBase)
+auto placeBody(World& world, std::string_view name, const Pose& pose, Frame frame = Frame::Base)
     -> PlaceStatus;
 
 /// The pose of body `name` in `frame`, or nothing for an unknown body.
-auto bodyPose(const World& world, std::string_view name, Frame frame = Frame::kBase)
+auto bodyPose(const World& world, std::string_view name, Frame frame = Frame::Base)
     -> std::optional<Pose>;
 
 }  // namespace smachac::sim

@@ -13,10 +13,10 @@ namespace smachac::sim {
 class World;
 
 enum class GripperStatus {
-  kOpened,       ///< fingers settled open
-  kGrasped,      ///< fingers settled on an object touched by both pads
-  kClosedEmpty,  ///< fingers settled closed with nothing between them
-  kTimeout,      ///< fingers still moving when the timeout passed
+  Opened,       ///< fingers settled open
+  Grasped,      ///< fingers settled on an object touched by both pads
+  ClosedEmpty,  ///< fingers settled closed with nothing between them
+  Timeout,      ///< fingers still moving when the timeout passed
 };
 
 struct GripperOptions {
@@ -24,24 +24,22 @@ struct GripperOptions {
 };
 
 struct GripperResult {
-  GripperStatus status = GripperStatus::kTimeout;
-  double gap = 0.0;        ///< distance between the pads' inner faces (m)
-  std::string heldBody{};  ///< the grasped body, empty unless kGrasped
-  /// Opening succeeds with kOpened; closing succeeds with kGrasped.
-  auto ok() const -> bool {
-    return status == GripperStatus::kOpened || status == GripperStatus::kGrasped;
-  }
+  GripperStatus status = GripperStatus::Timeout;
+  double gap = 0.0;         ///< distance between the pads' inner faces (m)
+  std::string held_body{};  ///< the grasped body, empty unless Grasped
+  /// Opening succeeds with Opened; closing succeeds with Grasped.
+  bool ok() const { return status == GripperStatus::Opened || status == GripperStatus::Grasped; }
 };
 
 class Gripper {
  public:
   Gripper(World& world, Side side);
 
-  auto side() const -> Side { return side_; }
+  Side side() const { return side_; }
 
   /// Blocking: command the fingers open or closed and step until they settle.
-  auto open(const GripperOptions& options = {}) -> GripperResult;
-  auto close(const GripperOptions& options = {}) -> GripperResult;
+  GripperResult open(const GripperOptions& options = {});
+  GripperResult close(const GripperOptions& options = {});
 
   /// Non-blocking forms.
   void commandOpen();
@@ -51,33 +49,33 @@ class Gripper {
   void commandOpening(double fraction);
 
   /// Where the fingers are, as a fraction of their travel: 0 closed, 1 open.
-  auto opening() const -> double;
+  double opening() const;
   /// Whether a finger is still moving (faster than the settling threshold).
-  auto moving() const -> bool;
+  bool moving() const;
   /// The mean force of the finger servos (N, at most 20).
-  auto fingerForce() const -> double;
+  double fingerForce() const;
 
   /// Distance between the pads' inner faces (m): about 35 mm closed, 77 mm open.
-  auto gap() const -> double;
+  double gap() const;
   /// The free body (block) that both pads touch, if any: a held block. Poll it to detect a
   /// dropped block.
-  auto heldBody() const -> std::optional<std::string>;
+  std::optional<std::string> heldBody() const;
 
   /// Called by World inside each step: writes the finger commands.
   void applyControl();
 
  private:
-  auto waitSettled(const GripperOptions& options) -> bool;
-  auto fingerSpeed() const -> double;
-  auto resultAfter(bool settled, bool closing) const -> GripperResult;
+  bool waitSettled(const GripperOptions& options);
+  double fingerSpeed() const;
+  GripperResult resultAfter(bool settled, bool closing) const;
 
   World& world_;
   Side side_;
-  int fingerQpos_[2] = {-1, -1};
-  int fingerDof_[2] = {-1, -1};
+  int finger_qpos_[2] = {-1, -1};
+  int finger_dof_[2] = {-1, -1};
   int actuator_[2] = {-1, -1};
   int pad_[2] = {-1, -1};
-  double openCommand_[2] = {0.0, 0.0};
+  double open_command_[2] = {0.0, 0.0};
   double opening_ = 1.0;  // the commanded fraction of the fingers' travel
 };
 

@@ -17,9 +17,9 @@ namespace smachac::sim {
 class World;
 
 enum class MoveStatus {
-  kReached,        ///< every joint within tolerance of the goal
-  kTimeout,        ///< the goal was not reached within the timeout
-  kInvalidTarget,  ///< a goal value is not finite or lies outside the joint limits
+  Reached,        ///< every joint within tolerance of the goal
+  Timeout,        ///< the goal was not reached within the timeout
+  InvalidTarget,  ///< a goal value is not finite or lies outside the joint limits
 };
 
 struct MoveOptions {
@@ -29,37 +29,36 @@ struct MoveOptions {
 };
 
 struct MoveResult {
-  MoveStatus status = MoveStatus::kTimeout;
-  double maxError = 0.0;  ///< largest |goal - q| at the end (rad)
-  double duration = 0.0;  ///< simulated seconds spent
-  auto ok() const -> bool { return status == MoveStatus::kReached; }
+  MoveStatus status = MoveStatus::Timeout;
+  double max_error = 0.0;  ///< largest |goal - q| at the end (rad)
+  double duration = 0.0;   ///< simulated seconds spent
+  bool ok() const { return status == MoveStatus::Reached; }
 };
 
 class Limb {
  public:
   Limb(World& world, Side side);
 
-  auto side() const -> Side { return side_; }
+  Side side() const { return side_; }
   /// "left_s0" ... "left_w2" (or right_*).
-  auto jointNames() const -> std::array<std::string, kArmJointCount>;
-  auto lowerLimits() const -> const JointPositions& { return lower_; }
-  auto upperLimits() const -> const JointPositions& { return upper_; }
+  std::array<std::string, kArmJointCount> jointNames() const;
+  const JointPositions& lowerLimits() const { return lower_; }
+  const JointPositions& upperLimits() const { return upper_; }
 
-  auto jointPositions() const -> JointPositions;
-  auto jointVelocities() const -> JointPositions;
+  JointPositions jointPositions() const;
+  JointPositions jointVelocities() const;
   /// The TCP site (`<side>_gripper`, 0.27125 m beyond w2) in `frame`.
-  auto endpointPose(Frame frame = Frame::kBase) const -> Pose;
+  Pose endpointPose(Frame frame = Frame::Base) const;
 
   /// Moves to `goal` and blocks (stepping the world) until reached or timed out.
-  auto moveToJointPositions(const JointPositions& goal, const MoveOptions& options = {})
-      -> MoveResult;
+  MoveResult moveToJointPositions(const JointPositions& goal, const MoveOptions& options = {});
 
   /// Non-blocking form: starts the move and returns false (doing nothing) for an invalid goal.
   /// Step the world and poll moveDone(); several limbs can move at once this way.
-  auto startMove(const JointPositions& goal, const MoveOptions& options = {}) -> bool;
-  auto moveDone() const -> bool;
+  bool startMove(const JointPositions& goal, const MoveOptions& options = {});
+  bool moveDone() const;
   /// Largest |goal - q| of the current move (rad).
-  auto moveError() const -> double;
+  double moveError() const;
 
   /// Holds the current positions (cancels a move).
   void holdCurrent();
@@ -68,39 +67,38 @@ class Limb {
   /// approaches `goal` no faster than `speed` times each joint's velocity limit, speeding up
   /// and slowing down smoothly, then holds it. A new command replaces the goal at once (cancels
   /// a move); returns false, doing nothing, for an invalid goal.
-  auto commandPositions(const JointPositions& goal, double speed) -> bool;
+  bool commandPositions(const JointPositions& goal, double speed);
 
   /// Called by World inside each step: writes the servo commands for the current time.
   void applyControl(double time);
 
  private:
-  auto validGoal(const JointPositions& goal) const -> bool;
-  auto moveDuration(const JointPositions& from, const JointPositions& to, double speed) const
-      -> double;
+  bool validGoal(const JointPositions& goal) const;
+  double moveDuration(const JointPositions& from, const JointPositions& to, double speed) const;
   void applyStreamControl(double time);
 
   World& world_;
   Side side_;
-  std::array<int, kArmJointCount> qposAddress_{};
-  std::array<int, kArmJointCount> dofAddress_{};
+  std::array<int, kArmJointCount> qpos_address_{};
+  std::array<int, kArmJointCount> dof_address_{};
   std::array<int, kArmJointCount> actuator_{};
   JointPositions lower_{};
   JointPositions upper_{};
-  JointPositions velocityLimit_{};
-  JointPositions leadTime_{};  // kv / kp of each servo: velocity feed-forward
+  JointPositions velocity_limit_{};
+  JointPositions lead_time_{};  // kv / kp of each servo: velocity feed-forward
   int site_ = -1;
   // The current move: a quintic profile from start_ to goal_ over [startTime_, endTime_].
   JointPositions start_{};
   JointPositions goal_{};
-  double startTime_ = 0.0;
-  double endTime_ = 0.0;
+  double start_time_ = 0.0;
+  double end_time_ = 0.0;
   double tolerance_ = 0.008726646;
   // Streaming mode (commandPositions): the servo target, its velocity and its speed fraction.
   bool streaming_ = false;
-  JointPositions streamTarget_{};
-  JointPositions streamVelocity_{};
-  double streamSpeed_ = 0.3;
-  double streamTime_ = 0.0;
+  JointPositions stream_target_{};
+  JointPositions stream_velocity_{};
+  double stream_speed_ = 0.3;
+  double stream_time_ = 0.0;
 };
 
 }  // namespace smachac::sim

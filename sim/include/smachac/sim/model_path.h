@@ -7,9 +7,9 @@
 namespace smachac::sim {
 
 /// The model directory: $SMACHAC_SIM_MODEL_DIR when set and non-empty, else sim/models.
-auto modelDirectory() -> std::string;
+std::string modelDirectory();
 
 /// modelDirectory() + "/scene.xml": Baxter, the table and three blocks.
-auto defaultScenePath() -> std::string;
+std::string defaultScenePath();
 
 }  // namespace smachac::sim

@@ -19,26 +19,26 @@ class Ik;
 class World;
 
 struct TaskOptions {
-  double hoverOffset = 0.15;  ///< m, along the base frame's +z
-  MoveOptions move{};         ///< for every arm move
+  double hover_offset = 0.15;  ///< m, along the base frame's +z
+  MoveOptions move{};          ///< for every arm move
 };
 
 struct TaskResult {
   bool ok = false;
-  std::string failedStep{};  ///< e.g. "IK_PICK_BLOCK_HOVER_POSE"; empty when ok
-  std::string detail{};      ///< why it failed
+  std::string failed_step{};  ///< e.g. "IK_PICK_BLOCK_HOVER_POSE"; empty when ok
+  std::string detail{};       ///< why it failed
 };
 
 /// The demo's overhead gripper orientation (gripper z down, fingers closing along base y).
-auto overheadOrientation() -> Quaternion;
+Quaternion overheadOrientation();
 
 /// Picks the block whose TCP grip pose is `pickPose` (base frame) with `side`'s arm; fails
 /// unless the block is still held at the hover pose.
-auto pickBlock(World& world, Ik& ik, Side side, const Pose& pickPose,
-               const TaskOptions& options = {}) -> TaskResult;
+TaskResult pickBlock(World& world, Ik& ik, Side side, const Pose& pick_pose,
+                     const TaskOptions& options = {});
 
 /// Puts the held block down with its TCP release pose at `placePose` (base frame).
-auto placeBlock(World& world, Ik& ik, Side side, const Pose& placePose,
-                const TaskOptions& options = {}) -> TaskResult;
+TaskResult placeBlock(World& world, Ik& ik, Side side, const Pose& place_pose,
+                      const TaskOptions& options = {});
 
 }  // namespace smachac::sim

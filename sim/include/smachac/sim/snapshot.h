@@ -43,13 +43,13 @@ class Snapshotter {
  public:
   explicit Snapshotter(World& world);
   Snapshotter(const Snapshotter&) = delete;
-  auto operator=(const Snapshotter&) -> Snapshotter& = delete;
+  Snapshotter& operator=(const Snapshotter&) = delete;
   ~Snapshotter();
 
   /// Renders the current state. On failure `error` says why and the image is empty.
-  auto capture(const SnapshotOptions& options, Image& image, std::string& error) -> bool;
+  bool capture(const SnapshotOptions& options, Image& image, std::string& error);
   /// capture() then write a PNG file.
-  auto writePng(const std::string& path, const SnapshotOptions& options = {}) -> SnapshotResult;
+  SnapshotResult writePng(const std::string& path, const SnapshotOptions& options = {});
 
  private:
   struct Renderer;
@@ -58,6 +58,6 @@ class Snapshotter {
 };
 
 /// Writes an RGB image (rows top to bottom) as PNG; returns an error message or "".
-auto writePngFile(const std::string& path, const Image& image) -> std::string;
+std::string writePngFile(const std::string& path, const Image& image);
 
 }  // namespace smachac::sim

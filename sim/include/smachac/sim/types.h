@@ -33,15 +33,13 @@ struct Pose {
   Quaternion orientation{};
 };
 
-enum class Side { kLeft, kRight };
+enum class Side { Left, Right };
 
-/// kWorld is MuJoCo's world frame (floor at z = 0); kBase is Baxter's `base` frame, 0.93 m
+/// World is MuJoCo's world frame (floor at z = 0); Base is Baxter's `base` frame, 0.93 m
 /// above the floor, in which the demo scripts give their poses.
-enum class Frame { kWorld, kBase };
+enum class Frame { World, Base };
 
 /// "left" or "right": the prefix of every joint, actuator and site name of that side.
-constexpr auto sideName(Side side) -> std::string_view {
-  return side == Side::kLeft ? "left" : "right";
-}
+constexpr std::string_view sideName(Side side) { return side == Side::Left ? "left" : "right"; }
 
 }  // namespace smachac::sim

@@ -41,12 +41,12 @@ class World {
  public:
   /// Loads an MJCF scene that contains the Baxter of sim/models/baxter.xml. Never throws:
   /// a missing file, an XML error or a missing robot part gives `error`.
-  static auto load(const std::string& scenePath) -> LoadResult;
+  static LoadResult load(const std::string& scene_path);
   /// load(defaultScenePath()).
-  static auto loadDefault() -> LoadResult;
+  static LoadResult loadDefault();
 
   World(const World&) = delete;
-  auto operator=(const World&) -> World& = delete;
+  World& operator=(const World&) = delete;
   ~World();
 
   /// Back to the model's initial state: time 0, arms at q = 0 holding still, grippers
@@ -58,34 +58,34 @@ class World {
   void stepFor(double seconds);
   /// Steps until `done()` is true (checked before each step) or `timeout` simulated seconds
   /// have passed. Returns whether `done()` became true.
-  auto stepUntil(const std::function<bool()>& done, double timeout) -> bool;
+  bool stepUntil(const std::function<bool()>& done, double timeout);
 
   /// Simulated time (s).
-  auto time() const -> double;
-  auto timestep() const -> double;
+  double time() const;
+  double timestep() const;
 
-  auto limb(Side side) -> Limb&;
-  auto limb(Side side) const -> const Limb&;
-  auto gripper(Side side) -> Gripper&;
-  auto gripper(Side side) const -> const Gripper&;
+  Limb& limb(Side side);
+  const Limb& limb(Side side) const;
+  Gripper& gripper(Side side);
+  const Gripper& gripper(Side side) const;
 
   /// Warning kinds raised since the last reset (none in a healthy run).
-  auto warnings() const -> std::vector<WarningCount>;
-  auto hasWarnings() const -> bool;
+  std::vector<WarningCount> warnings() const;
+  bool hasWarnings() const;
 
   /// Simulated seconds per wall-clock second spent stepping since reset() or resetTiming().
-  auto realTimeFactor() const -> double;
+  double realTimeFactor() const;
   void resetTiming();
 
   /// Converts a pose given in `frame` to the world frame, and back.
-  auto toWorld(const Pose& pose, Frame frame) const -> Pose;
-  auto fromWorld(const Pose& pose, Frame frame) const -> Pose;
+  Pose toWorld(const Pose& pose, Frame frame) const;
+  Pose fromWorld(const Pose& pose, Frame frame) const;
 
   /// Low-level access for the library and tests. Hold lock() while using data().
-  auto model() const -> const mjModel_*;
-  auto data() -> mjData_*;
-  auto data() const -> const mjData_*;
-  auto lock() const -> std::unique_lock<std::recursive_mutex>;
+  const mjModel_* model() const;
+  mjData_* data();
+  const mjData_* data() const;
+  std::unique_lock<std::recursive_mutex> lock() const;
 
  private:
   World(mjModel_* model, mjData_* data);
@@ -96,15 +96,15 @@ class World {
   mjData_* data_;
   std::unique_ptr<Limb> limbs_[2];
   std::unique_ptr<Gripper> grippers_[2];
-  std::vector<int> robotDofs_;
-  Pose basePose_;
+  std::vector<int> robot_dofs_;
+  Pose base_pose_;
   mutable std::recursive_mutex mutex_;
-  double wallSeconds_ = 0.0;
-  double simSeconds_ = 0.0;
+  double wall_seconds_ = 0.0;
+  double sim_seconds_ = 0.0;
 };
 
 /// Text of every MuJoCo warning printed since the last call (process-wide; MuJoCo has one
 /// warning hook). Also keeps MuJoCo from writing MUJOCO_LOG.TXT into the working directory.
-auto takeMujocoMessages() -> std::vector<std::string>;
+std::vector<std::string> takeMujocoMessages();
 
 }  // namespace smachac::sim

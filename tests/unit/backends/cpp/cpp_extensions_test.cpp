@@ -3,7 +3,7 @@
 
 #include <doctest/doctest.h>
 
-#include "backends/tmpl/value.h"
+#include "backends/tmpl/values/value.h"
 
 namespace smachac::backends::cpp {
 namespace {
@@ -29,11 +29,11 @@ TEST_CASE("cppCommentText keeps a comment on its line and never splices the next
 
 TEST_CASE("a !str string is a string even in backticks") {
   Value forced = Value::string("`f(1)`");
-  auto isForced = [&forced](const Value& v) { return v.identity() == forced.identity(); };
-  CHECK(cppValueExpression(forced, isForced) == "std::string(\"`f(1)`\")");
-  CHECK(cppValueExpression(Value::newList({forced}), isForced) ==
+  auto is_forced = [&forced](const Value& v) { return v.identity() == forced.identity(); };
+  CHECK(cppValueExpression(forced, is_forced) == "std::string(\"`f(1)`\")");
+  CHECK(cppValueExpression(Value::newList({forced}), is_forced) ==
         "rt::List{rt::Value(std::string(\"`f(1)`\"))}");
-  CHECK(cppValueExpression(Value::string("`f(1)`"), isForced) == "f(1)");
+  CHECK(cppValueExpression(Value::string("`f(1)`"), is_forced) == "f(1)");
 }
 
 TEST_CASE("every byte gives a literal of plain ASCII") {
@@ -63,15 +63,15 @@ TEST_CASE("cppValueExpression writes runtime values") {
 
 TEST_CASE("cppUserdataArgument writes plain strings as bare literals, the rest as cppvalue") {
   Value forced = Value::string("`f(1)`");
-  auto isForced = [&forced](const Value& v) { return v.identity() == forced.identity(); };
-  CHECK(cppUserdataArgument(Value::string("a \"b\""), isForced) == "\"a \\\"b\\\"\"");
-  CHECK(cppUserdataArgument(forced, isForced) == "\"`f(1)`\"");
-  CHECK(cppUserdataArgument(Value::string("`f(1)`"), isForced) == "f(1)");
-  CHECK(cppUserdataArgument(Value::string(std::string("a\0b", 3)), isForced) ==
+  auto is_forced = [&forced](const Value& v) { return v.identity() == forced.identity(); };
+  CHECK(cppUserdataArgument(Value::string("a \"b\""), is_forced) == "\"a \\\"b\\\"\"");
+  CHECK(cppUserdataArgument(forced, is_forced) == "\"`f(1)`\"");
+  CHECK(cppUserdataArgument(Value::string("`f(1)`"), is_forced) == "f(1)");
+  CHECK(cppUserdataArgument(Value::string(std::string("a\0b", 3)), is_forced) ==
         "std::string(\"a\\000b\", 3)");
-  CHECK(cppUserdataArgument(Value::integer(2), isForced) == "int64_t{2}");
-  CHECK(cppUserdataArgument(Value::none(), isForced) == "nullptr");
-  CHECK(cppUserdataArgument(Value::newList({Value::string("a")}), isForced) ==
+  CHECK(cppUserdataArgument(Value::integer(2), is_forced) == "int64_t{2}");
+  CHECK(cppUserdataArgument(Value::none(), is_forced) == "nullptr");
+  CHECK(cppUserdataArgument(Value::newList({Value::string("a")}), is_forced) ==
         "rt::List{rt::Value(std::string(\"a\"))}");
 }
 

@@ -55,5 +55,23 @@ TEST_CASE("buffer values for templates: joined, stripped for the base only") {
   CHECK(stripWhitespace(" \n ").empty());
 }
 
+TEST_CASE("taking a buffer gives the same value as reading it, and empties the buffer") {
+  CodeBuffers buffers;
+  for (std::string_view name : {"body", "main", "header"}) {
+    buffers.insert(index(name), " first\n", "sm");
+    buffers.insert(index(name), "second\n", "sm");
+  }
+  for (std::string_view name : {"body", "main"}) {
+    std::string read = buffers.value(index(name), true).s();
+    CHECK(buffers.take(index(name), true).s() == read);
+    CHECK(buffers.joined(index(name)).empty());
+  }
+  CHECK(buffers.take(index("body"), false).s().empty());
+  tmpl::Value header = buffers.take(index("header"), false);
+  REQUIRE(header.isDict());
+  CHECK(header.dict().findString("sm")->s() == " first\n\nsecond\n\n");
+  CHECK(buffers.joinedEntries(index("header")).empty());
+}
+
 }  // namespace
 }  // namespace smachac::generator

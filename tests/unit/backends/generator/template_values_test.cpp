@@ -4,7 +4,7 @@
 #include <doctest/doctest.h>
 
 #include "backends/generator/state_variables.h"
-#include "backends/tmpl/value_print.h"
+#include "backends/tmpl/values/value_print.h"
 
 namespace smachac::generator {
 namespace {

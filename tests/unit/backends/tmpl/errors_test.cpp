@@ -146,7 +146,7 @@ TEST_CASE("an environment's limits replace the defaults, for its renders only") 
        {"list", "{{ ([1, 2] * 3) | length }}|{{ [1, 2] * 4 }}"},
        {"out", "{% for i in range(5) %}abcd{% endfor %}"}});
   smachac::tmpl::Value ctx = smachac::tmpl::Value::newDict();
-  env->setLimits({.steps = 20, .stringBytes = 16, .items = 6});
+  env->setLimits({.steps = 20, .string_bytes = 16, .items = 6});
   CHECK_THROWS_WITH(env->render("loop", ctx), "loop:1:27: template execution exceeded 20 steps");
   CHECK_THROWS_WITH(env->render("str", ctx), "str:1:35: string too large (limit 16)");
   CHECK_THROWS_WITH(env->render("list", ctx), "list:1:39: list too large (limit 6)");

@@ -3,7 +3,7 @@
 // renders and macro calls.
 #include <doctest/doctest.h>
 
-#include "backends/tmpl/value_print.h"
+#include "backends/tmpl/values/value_print.h"
 #include "tests/unit/backends/tmpl/tmpl_test_util.h"
 
 using smachac::tmpl::CallArgs;

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "backends/tmpl/value_print.h"
+#include "backends/tmpl/values/value_print.h"
 #include "tests/unit/backends/tmpl/tmpl_test_util.h"
 
 using smachac::EmbeddedFile;
@@ -101,9 +101,9 @@ TEST_CASE("moduleVariables runs blocks; macros it exports stay callable") {
   auto vars = env->moduleVariables("t", ctx);
   REQUIRE(vars.size() == 1);
   CHECK(smachac::tmpl::str(*ctx.dict().findString("seen")) == "[1]");
-  Value useCtx = Value::newDict();
-  useCtx.dict().setString("hello", vars[0].second);
-  CHECK(env->render("use", useCtx) == "hi there");
+  Value use_ctx = Value::newDict();
+  use_ctx.dict().setString("hello", vars[0].second);
+  CHECK(env->render("use", use_ctx) == "hi there");
 }
 
 TEST_CASE("metaBlock renders the template's own meta block with an empty context") {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "backends/tmpl/environment.h"
-#include "backends/tmpl/value_convert.h"
+#include "backends/tmpl/values/value_convert.h"
 
 namespace smachac::tmpl::testing {
 

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "backends/tmpl/value.h"
-#include "backends/tmpl/value_ops.h"
-#include "backends/tmpl/value_print.h"
+#include "backends/tmpl/values/value.h"
+#include "backends/tmpl/values/value_ops.h"
+#include "backends/tmpl/values/value_print.h"
 
 using smachac::tmpl::equals;
 using smachac::tmpl::lessThan;

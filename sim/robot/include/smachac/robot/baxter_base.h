@@ -32,18 +32,18 @@ namespace rt = smachac::runtime;
 
 /// Applies and removes the robot flags in argv (argc shrinks). Returns an error message for a
 /// bad value, or nothing.
-auto takeRobotFlags(int& argc, char** argv, RobotOptions& options) -> std::optional<std::string>;
+std::optional<std::string> takeRobotFlags(int& argc, char** argv, RobotOptions& options);
 
 /// Options from the environment and the flags, then RobotContext::create. Prints the problem
 /// to stderr and returns nullptr on failure.
-auto setUpBaxter(int& argc, char** argv) -> std::unique_ptr<RobotContext>;
+std::unique_ptr<RobotContext> setUpBaxter(int& argc, char** argv);
 
 /// Steps options().settle_seconds of simulated time (the blocks come to rest), takes a
 /// last snapshot, and returns the scene report.
-auto finishBaxter(RobotContext& context) -> SceneReport;
+SceneReport finishBaxter(RobotContext& context);
 
 /// runMain(root, argc, argv), then finishBaxter and, unless disabled, the printed report.
 /// Returns runMain's exit code.
-auto runBaxter(rt::State& root, RobotContext& context, int argc, char** argv) -> int;
+int runBaxter(rt::State& root, RobotContext& context, int argc, char** argv);
 
 }  // namespace smachac::robot

@@ -34,18 +34,18 @@ class FormatError : public rt::Error {
   using rt::Error::Error;
 };
 
-auto parsePose(const rt::Value& value) -> sim::Pose;
-auto parseOffset(const rt::Value& value) -> sim::Pose;
+sim::Pose parsePose(const rt::Value& value);
+sim::Pose parseOffset(const rt::Value& value);
 /// `pose` moved by `offset` (see above).
-auto applyOffset(const sim::Pose& pose, const sim::Pose& offset) -> sim::Pose;
-auto parseJointPositions(const rt::Value& value) -> sim::JointPositions;
-auto parseJointPoints(const rt::Value& value) -> std::vector<sim::JointPositions>;
-auto parseLimb(std::string_view limb) -> sim::Side;
-auto parseFrame(std::string_view frame) -> sim::Frame;
+sim::Pose applyOffset(const sim::Pose& pose, const sim::Pose& offset);
+sim::JointPositions parseJointPositions(const rt::Value& value);
+std::vector<sim::JointPositions> parseJointPoints(const rt::Value& value);
+sim::Side parseLimb(std::string_view limb);
+sim::Frame parseFrame(std::string_view frame);
 
 /// [[x, y, z], [qx, qy, qz, qw]].
-auto poseValue(const sim::Pose& pose) -> rt::Value;
+rt::Value poseValue(const sim::Pose& pose);
 /// [s0, s1, e0, e1, w0, w1, w2].
-auto jointsValue(const sim::JointPositions& joints) -> rt::Value;
+rt::Value jointsValue(const sim::JointPositions& joints);
 
 }  // namespace smachac::robot

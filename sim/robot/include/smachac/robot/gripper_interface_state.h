@@ -36,13 +36,13 @@ class GripperInterfaceState : public RobotState {
   GripperInterfaceState(RobotContext& context, GripperInterfaceArgs args = {});
 
  protected:
-  auto run(rt::UserData& userdata) -> std::string override;
+  std::string run(rt::UserData& userdata) override;
 
  private:
   /// Commands the fingers and steps until they settle; nothing when preempted.
-  auto actuate(sim::Gripper& gripper, bool close) -> std::optional<sim::GripperResult>;
-  static auto outcome(const sim::Gripper& gripper, bool settled, bool close) -> sim::GripperResult;
-  auto judge(const sim::GripperResult& result, bool close) -> std::string;
+  std::optional<sim::GripperResult> actuate(sim::Gripper& gripper, bool close);
+  static sim::GripperResult outcome(const sim::Gripper& gripper, bool settled, bool close);
+  std::string judge(const sim::GripperResult& result, bool close);
 
   GripperInterfaceArgs args_;
 };

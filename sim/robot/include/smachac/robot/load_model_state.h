@@ -30,7 +30,7 @@ class LoadModelState : public RobotState {
   LoadModelState(RobotContext& context, LoadModelArgs args = {});
 
  protected:
-  auto run(rt::UserData& userdata) -> std::string override;
+  std::string run(rt::UserData& userdata) override;
 
  private:
   LoadModelArgs args_;

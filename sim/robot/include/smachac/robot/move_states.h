@@ -40,7 +40,7 @@ class MoveToJointPositionsState : public RobotState {
   MoveToJointPositionsState(RobotContext& context, MoveToJointPositionsArgs args = {});
 
  protected:
-  auto run(rt::UserData& userdata) -> std::string override;
+  std::string run(rt::UserData& userdata) override;
 
  private:
   MoveToJointPositionsArgs args_;
@@ -58,7 +58,7 @@ class FollowJointTrajActionState : public RobotState {
   FollowJointTrajActionState(RobotContext& context, FollowJointTrajActionArgs args = {});
 
  protected:
-  auto run(rt::UserData& userdata) -> std::string override;
+  std::string run(rt::UserData& userdata) override;
 
  private:
   FollowJointTrajActionArgs args_;

@@ -36,7 +36,7 @@ class PoseToJointTrajServiceState : public RobotState {
   ~PoseToJointTrajServiceState() override;
 
  protected:
-  auto run(rt::UserData& userdata) -> std::string override;
+  std::string run(rt::UserData& userdata) override;
 
  private:
   PoseToJointTrajServiceArgs args_;

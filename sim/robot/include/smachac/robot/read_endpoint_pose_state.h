@@ -22,7 +22,7 @@ class ReadEndpointPoseState : public RobotState {
   ReadEndpointPoseState(RobotContext& context, ReadEndpointPoseArgs args = {});
 
  protected:
-  auto run(rt::UserData& userdata) -> std::string override;
+  std::string run(rt::UserData& userdata) override;
 
  private:
   ReadEndpointPoseArgs args_;

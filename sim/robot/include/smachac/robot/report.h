@@ -38,9 +38,8 @@ struct SceneReport {
 };
 
 /// Whether `upper` rests on `lower` (missing bodies: not stacked).
-auto stackVerdict(const sim::World& world, std::string_view upper, std::string_view lower)
-    -> StackVerdict;
-auto sceneReport(const sim::World& world) -> SceneReport;
+StackVerdict stackVerdict(const sim::World& world, std::string_view upper, std::string_view lower);
+SceneReport sceneReport(const sim::World& world);
 /// Readable lines: time, each block, the verdict, MuJoCo warnings.
 void printReport(std::ostream& out, const SceneReport& report);
 

@@ -37,15 +37,15 @@ namespace smachac::robot {
 
 /// Where BaxterBase puts both arms before the machine starts.
 enum class StartPose {
-  kNone,     ///< leave them as the scene loads them (q = 0, holding still)
-  kNeutral,  ///< baxter_interface's move_to_neutral
-  kUntuck,   ///< tuck_arms.py -u, the pick-and-place demo's start pose
+  None,     ///< leave them as the scene loads them (q = 0, holding still)
+  Neutral,  ///< baxter_interface's move_to_neutral
+  Untuck,   ///< tuck_arms.py -u, the pick-and-place demo's start pose
 };
 
 struct RobotOptions {
   std::string scene{};         ///< MJCF scene; empty: sim/models/scene.xml
   std::string snapshot_dir{};  ///< write PNG snapshots here; empty: none
-  StartPose start_pose = StartPose::kNone;
+  StartPose start_pose = StartPose::None;
   double settle_seconds = 1.0;  ///< simulated time stepped after the machine returns
   bool report = true;           ///< print the final scene report
   std::ostream* log = nullptr;  ///< the states' messages; nullptr: std::cerr
@@ -66,16 +66,16 @@ class RobotContext : public runtime::ThreadObserver {
 
   /// Loads options.scene (or the default scene) and moves to options.start_pose. Never
   /// throws: on failure returns nullptr and sets `error`.
-  static auto create(RobotOptions options, std::string& error) -> std::unique_ptr<RobotContext>;
+  static std::unique_ptr<RobotContext> create(RobotOptions options, std::string& error);
 
-  auto world() -> sim::World& { return *world_; }
-  auto world() const -> const sim::World& { return *world_; }
-  auto options() const -> const RobotOptions& { return options_; }
+  sim::World& world() { return *world_; }
+  const sim::World& world() const { return *world_; }
+  const RobotOptions& options() const { return options_; }
 
   /// Steps the world until `done()` (checked under the world's lock before each step) or
   /// `timeout` simulated seconds have passed; returns whether `done()` became true. Each step
   /// waits until every executing robot state waits for it too.
-  auto stepUntil(const std::function<bool()>& done, double timeout) -> bool;
+  bool stepUntil(const std::function<bool()>& done, double timeout);
 
   /// A robot state starts or stops executing (RobotState does this; see stepUntil()).
   void beginExecution();
@@ -89,13 +89,13 @@ class RobotContext : public runtime::ThreadObserver {
   /// Logs `message` for the state at `path` ("[robot] PICK_BLOCK/OPEN_GRIPPER: ...").
   void log(std::string_view path, std::string_view message);
   /// Every message logged so far, in order.
-  auto messages() const -> std::vector<std::string>;
+  std::vector<std::string> messages() const;
 
   /// Writes `<snapshot_dir>/<NNN>_<label>.png` when snapshots are enabled ('/' in the label
   /// becomes '.'); returns the path, or "" when disabled or failed (failures are logged).
-  auto snapshot(std::string_view label) -> std::string;
+  std::string snapshot(std::string_view label);
   /// The snapshots written so far.
-  auto snapshots() const -> std::vector<std::string>;
+  std::vector<std::string> snapshots() const;
 
  private:
   std::unique_ptr<sim::World> world_;

@@ -40,32 +40,31 @@ class RobotState : public rt::State {
 
  protected:
   /// What the state does.
-  virtual auto run(rt::UserData& userdata) -> std::string = 0;
+  virtual std::string run(rt::UserData& userdata) = 0;
 
   /// `inputs` are the input keys this state reads (those without a variable), `outputs`
   /// the keys it writes.
   RobotState(RobotContext& context, rt::Keys inputs, rt::Keys outputs = {});
 
-  auto world() -> sim::World& { return context_.world(); }
+  sim::World& world() { return context_.world(); }
 
   /// The limb: the variable when given, else input key `limb`.
-  auto limbOf(const std::string& variable, rt::UserData& userdata) const -> sim::Side;
+  sim::Side limbOf(const std::string& variable, rt::UserData& userdata) const;
   /// The variable when it is not null, else input key `key` (which must be set).
-  static auto valueOf(const rt::Value& variable, std::string_view key, rt::UserData& userdata)
-      -> rt::Value;
+  static rt::Value valueOf(const rt::Value& variable, std::string_view key, rt::UserData& userdata);
   /// The variable when it is not null, else input key `key` when it is set.
-  static auto optionalValueOf(const rt::Value& variable, std::string_view key,
-                              rt::UserData& userdata) -> std::optional<rt::Value>;
+  static std::optional<rt::Value> optionalValueOf(const rt::Value& variable, std::string_view key,
+                                                  rt::UserData& userdata);
 
   /// Moves `side`'s arm to `goal`, stepping the world until it gets there, times out, or a
   /// preempt is requested. Returns succeeded, aborted or preempted.
-  auto moveArm(sim::Side side, const sim::JointPositions& goal, const MoveSettings& settings)
-      -> std::string;
+  std::string moveArm(sim::Side side, const sim::JointPositions& goal,
+                      const MoveSettings& settings);
 
   /// Logs `why` and returns `aborted`.
-  auto abort(std::string_view why) -> std::string;
+  std::string abort(std::string_view why);
   /// Services the preempt request and returns `preempted`.
-  auto preempted() -> std::string;
+  std::string preempted();
 
  private:
   RobotContext& context_;

@@ -55,7 +55,9 @@ class Container : public State {
   virtual void collectOwnProblems(std::vector<std::string>& problems) = 0;
   void invalidate() { checked_ = false; }
 
-  std::string runChild(Child& child);
+  /// The child's outcome as its position in the child's outcomes(); -1 for one that is not
+  /// there, in `other`.
+  int runChild(Child& child, std::string& other);
   void copyInputKeys(UserData& parent);
   void copyOutputKeys(UserData& parent);
   /// Services this container's preempt request and returns `preempted`.

@@ -31,12 +31,16 @@ namespace smachac::runtime {
 struct KeyedCallback {
   std::string key;
   Callback callback;
+  /// The key's position in its state's output keys (placeCallbacks), if known.
+  std::size_t position = ~std::size_t{0};
 };
 /// In the order they run: `{{"n", [](rt::UserData& ud) { ... }}, ...}`.
 using Callbacks = std::vector<KeyedCallback>;
 
 /// Runs `callbacks` in order, writing each result to its key.
 void runCallbacks(const Callbacks& callbacks, UserData& userdata);
+/// Finds each callback's key in `output_keys`, so that runCallbacks writes it without a search.
+void placeCallbacks(Callbacks& callbacks, const Keys& output_keys);
 
 /// Seed for RandomOutcomeStates made without one (each mixes in its path). Unset: random.
 void setRandomSeed(std::optional<uint64_t> seed);
@@ -46,9 +50,11 @@ class CallbacksState : public State {
  public:
   explicit CallbacksState(StateSpec spec = {}, Callbacks callbacks = {});
   std::string execute(UserData& userdata) override;
+  int executeAt(UserData& userdata, std::string& other) override;
 
  private:
   Callbacks callbacks_;
+  int succeeded_;  ///< the position of `succeeded` in outcomes(), or -1
 };
 
 class PrintUserdataState : public State {
@@ -81,9 +87,13 @@ class ConditionalOutcomeState : public State {
   /// (the condition), plus output key `outcome` (the choice).
   ConditionalOutcomeState(StateSpec spec, Callbacks callbacks = {});
   std::string execute(UserData& userdata) override;
+  int executeAt(UserData& userdata, std::string& other) override;
 
  private:
   Callbacks callbacks_;
+  std::vector<std::size_t> conditions_;  ///< per outcome but `default`: its input key position
+  std::size_t outcome_key_;              ///< the position of `outcome` in outputKeys()
+  std::vector<Value> choices_;           ///< per outcome: the Value written to `outcome`
 };
 
 class LogState : public State {

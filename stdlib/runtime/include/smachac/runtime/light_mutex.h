@@ -26,6 +26,7 @@ class LightMutex {
     }
   }
 
+  // NOLINTNEXTLINE(readability-identifier-naming): the name std::unique_lock calls
   bool try_lock() {
     int state = kFree;
     return state_.compare_exchange_strong(state, kLocked, std::memory_order_acquire);

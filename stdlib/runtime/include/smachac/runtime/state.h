@@ -51,6 +51,10 @@ class State {
 
   /// Runs the state; returns one of outcomes() (or `preempted`).
   virtual std::string execute(UserData& userdata) = 0;
+  /// What containers call: runs the state and returns the position of its outcome in
+  /// outcomes(), or -1 for an outcome that is not one of them, which goes to `other`. By
+  /// default execute() and a search; states that know the position override it.
+  virtual int executeAt(UserData& userdata, std::string& other);
 
   const Keys& outcomes() const { return outcomes_; }
   const Keys& inputKeys() const { return input_keys_; }
@@ -66,7 +70,9 @@ class State {
 
   /// Asks the state to stop soon. Thread-safe; containers forward it to running children.
   virtual void requestPreempt();
-  bool preemptRequested() const { return preempt_.load(std::memory_order_acquire); }
+  /// Sequentially consistent (a plain load on x86 and ARM64): a state machine publishes its
+  /// current child and then reads this flag without a lock (state_machine.cpp).
+  bool preemptRequested() const { return preempt_.load(); }
   /// Clears the request: the state has acted on it.
   void servicePreempt();
   /// Clears a request the state did not act on (containers do this after a child returns).

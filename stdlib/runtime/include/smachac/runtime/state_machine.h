@@ -7,6 +7,7 @@
 // its transitions are resolved to indices, so a transition costs no string map lookup.
 #pragma once
 
+#include <atomic>
 #include <concepts>
 #include <cstdint>
 #include <map>
@@ -75,14 +76,16 @@ class StateMachine : public Container {
   void finishRun(std::size_t last);
   void preemptCurrentLocked();
   State& childAt(int index);
-  Target resolve(std::size_t index, const std::string& outcome) const;
-  void emitTransition(std::size_t index, const std::string& outcome, Target target) const;
+  /// Where outcome `position` of child `index` leads; fails for an undeclared outcome (-1).
+  Target resolve(std::size_t index, int position) const;
+  void emitTransition(std::size_t index, int position, Target target) const;
 
   std::vector<Transitions> transitions_;    ///< per child, as added
   std::vector<std::vector<Target>> table_;  ///< per child, per declared outcome
-  LightMutex mutex_;                        ///< guards current_, preempted_
-  int current_ = -1;                        ///< the child running or about to run, or -1
+  LightMutex mutex_;                        ///< guards preempted_ and current_'s readers
+  std::atomic<int> current_{-1};            ///< the child running or about to run, or -1
   int preempted_ = -1;                      ///< the child last asked to preempt, or -1
+  std::string other_;                       ///< an undeclared outcome a child returned
 };
 
 }  // namespace smachac::runtime

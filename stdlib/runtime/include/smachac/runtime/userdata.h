@@ -6,16 +6,20 @@
 //   the state writes `y`  -> `y` must be one of its output keys -> the store's remapping[y] or y
 //
 // Reads return copies (Values share their lists), so concurrent children of a Concurrence can
-// use one scope safely: every store access takes the store's lock.
+// use one scope safely: a shared store (a Concurrence's) is locked at every access. A state
+// machine's store is used by one thread at a time (its children run one after another), so
+// views read and write it without the lock; from outside, use it only while nothing runs.
 //
-// A view resolves each key once, at its first use: whether the state declares it, the store key
-// it is remapped to, and the store's entry for it (a store never removes an entry, so the entry
-// stays where it is). Every later access is a comparison with the few keys the state used and
-// one locked copy, without a lookup in the remapping or the store.
+// A view keeps a slot per declared key (its position in inputKeys() or outputKeys()),
+// resolved at the key's first use: the store key it is remapped to and the store's entry for
+// it (a store never removes an entry, so the entry stays where it is). Generated code names
+// the position with the key (`ud.at("n", 0)`), so an access is one comparison of the key with
+// the declared one and a copy, without a search, a lookup in the remapping or the store.
 #pragma once
 
 #include <concepts>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,13 +48,17 @@ T convert(const Value& value, Message message) {
 /// State key -> key in the parent container's userdata.
 using Remapping = std::map<std::string, std::string, std::less<>>;
 
-/// A container's userdata scope. Thread-safe.
+/// A container's userdata scope. Thread-safe, except views of a store that is not shared.
 class UserDataStore {
  public:
   UserDataStore() = default;
   explicit UserDataStore(Map initial) : values_(std::move(initial)) {}
   UserDataStore(const UserDataStore&) = delete;
   UserDataStore& operator=(const UserDataStore&) = delete;
+
+  /// Whether states of several threads use the store at the same time (the default, and a
+  /// Concurrence's scope). A state machine makes its scope unshared: its views skip the lock.
+  void setShared(bool shared) { shared_ = shared; }
 
   void set(std::string_view key, Value value);
   /// set(key, Value(text)) without a Value to destroy at the call: generated code sets its
@@ -79,13 +87,28 @@ class UserDataStore {
 
   static std::string typeMessage(std::string_view key, const TypeError& e);
   void setText(std::string_view key, const char* text);
-  /// find(key) and set(key, value) through `entry`, the view's cache of the key's entry:
-  /// null until the key is set, then its entry (entries are never removed or moved).
-  std::optional<Value> findAt(std::string_view key, Value*& entry);
-  void setAt(std::string_view key, Value*& entry, Value&& value);
+  /// The entry of `key`, or null when it is not set (entries are never removed or moved).
+  Value* entryOf(std::string_view key);
+  /// set(key, value), returning the entry.
+  Value& assign(std::string_view key, Value&& value);
+  /// A copy of / an assignment to an entry, under the lock when the store is shared.
+  Value load(const Value& entry) const {
+    if (!shared_) return entry;
+    std::lock_guard lock(mutex_);
+    return entry;
+  }
+  void store(Value& entry, Value&& value) {
+    if (!shared_) {
+      entry = std::move(value);
+      return;
+    }
+    std::lock_guard lock(mutex_);
+    entry = std::move(value);
+  }
 
   mutable LightMutex mutex_;
   Map values_;  ///< never erased from: views keep pointers to its values
+  bool shared_ = true;
 };
 
 class State;
@@ -103,33 +126,65 @@ class UserData {
   T get(std::string_view key) const {
     return detail::convert<T>(at(key), [&](const TypeError& e) { return typeMessage(key, e); });
   }
-  Value at(std::string_view key) const;
+  Value at(std::string_view key) const { return at(key, kUnknownPosition); }
   /// The value of an input key, or nothing when it is not set (still an error if undeclared).
-  std::optional<Value> find(std::string_view key) const;
+  std::optional<Value> find(std::string_view key) const { return find(key, kUnknownPosition); }
   /// Writes output key `key`; throws UserDataError when it is undeclared.
-  void set(std::string_view key, Value value);
+  void set(std::string_view key, Value value) { set(key, kUnknownPosition, std::move(value)); }
+
+  /// The same for a key at `position` in inputKeys() (at, find) or outputKeys() (set): what
+  /// generated code and the core states call. When the key is not there, it is searched for.
+  Value at(std::string_view key, std::size_t position) const {
+    if (const Value* entry = known(inputs_, key, position)) return store_->load(*entry);
+    return atFirst(key, position);
+  }
+  std::optional<Value> find(std::string_view key, std::size_t position) const {
+    if (const Value* entry = known(inputs_, key, position)) return store_->load(*entry);
+    return findFirst(key, position);
+  }
+  void set(std::string_view key, std::size_t position, Value value) {
+    Value* entry = known(outputs_, key, position);
+    if (entry == nullptr || tracking_) return setFirst(key, position, std::move(value));
+    store_->store(*entry, std::move(value));
+  }
 
   const State& state() const { return *state_; }
   /// The store key `key` maps to.
   std::string_view remap(std::string_view key) const;
 
   /// Trace support: record the store keys written from now on.
-  void trackWrites(bool on);
+  void trackWrites(bool on) {
+    tracking_ = on;
+    written_.clear();
+  }
   const std::vector<std::string>& written() const { return written_; }
 
  private:
-  /// A key the state used, resolved at its first use.
+  static constexpr std::size_t kUnknownPosition = ~std::size_t{0};
+
+  /// A declared key, resolved at its first use.
   struct Slot {
     std::string key;         ///< the state's name for it
     std::string target;      ///< the store's: remap(key)
-    bool readable = false;   ///< checked: an input key
-    bool writable = false;   ///< checked: an output key
     Value* entry = nullptr;  ///< the store's entry, once the key is set
+    bool resolved = false;   ///< key and target are set
   };
 
-  Slot& slot(std::string_view key) const;
-  void checkInput(std::string_view key) const;
-  void checkOutput(std::string_view key) const;
+  /// The entry of the declared key `key` at `position` once resolved and set; else null.
+  static Value* known(const std::vector<Slot>& slots, std::string_view key, std::size_t position) {
+    if (position >= slots.size()) return nullptr;
+    const Slot& slot = slots[position];
+    return slot.entry != nullptr && slot.key == key ? slot.entry : nullptr;
+  }
+  /// at(), find() and set() when known() does not know the key: a search, a check, a lookup.
+  Value atFirst(std::string_view key, std::size_t position) const;
+  std::optional<Value> findFirst(std::string_view key, std::size_t position) const;
+  void setFirst(std::string_view key, std::size_t position, Value value);
+  Slot& inputSlot(std::string_view key, std::size_t position) const;
+  Slot& outputSlot(std::string_view key, std::size_t position) const;
+  Slot& slotAt(std::vector<Slot>& slots, std::size_t count, std::size_t position,
+               std::string_view key) const;
+  [[noreturn]] void undeclared(std::string_view key, bool write) const;
   std::string typeMessage(std::string_view key, const TypeError& e) const;
 
   UserDataStore* store_;
@@ -137,7 +192,8 @@ class UserData {
   const Remapping* remapping_;
   bool tracking_ = false;
   std::vector<std::string> written_;
-  mutable std::vector<Slot> slots_;  ///< the keys used so far, in the order of first use
+  mutable std::vector<Slot> inputs_;   ///< per input key, by position
+  mutable std::vector<Slot> outputs_;  ///< per output key, by position
 };
 
 }  // namespace smachac::runtime

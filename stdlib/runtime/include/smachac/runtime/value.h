@@ -72,6 +72,9 @@ class Value {
   friend bool operator==(const Value& a, const Value& b);
 
  private:
+  /// Throws TypeError: the value is not `expected` ("an int").
+  [[noreturn]] void mismatch(const char* expected) const;
+
   std::variant<std::monostate, bool, int64_t, double, std::string, std::shared_ptr<const List>,
                std::shared_ptr<const Map>>
       data_;
@@ -81,14 +84,25 @@ template <class T>
 T Value::as() const {
   static_assert(sizeof(T) == 0, "Value::as<T>: unsupported type");
 }
+// The scalar reads are inline: expressions and callbacks read a number at every step.
 template <>
-bool Value::as<bool>() const;
+inline bool Value::as<bool>() const {
+  if (const bool* b = std::get_if<bool>(&data_)) return *b;
+  mismatch("a bool");
+}
 template <>
 int Value::as<int>() const;
 template <>
-int64_t Value::as<int64_t>() const;
+inline int64_t Value::as<int64_t>() const {
+  if (const int64_t* i = std::get_if<int64_t>(&data_)) return *i;
+  mismatch("an int");
+}
 template <>
-double Value::as<double>() const;
+inline double Value::as<double>() const {
+  if (const double* d = std::get_if<double>(&data_)) return *d;
+  if (const int64_t* i = std::get_if<int64_t>(&data_)) return static_cast<double>(*i);
+  mismatch("a double");
+}
 template <>
 std::string Value::as<std::string>() const;
 template <>

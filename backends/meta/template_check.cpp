@@ -1,0 +1,213 @@
+// Template existence, variables and literal types, from meta blocks.
+#include "backends/meta/template_check.h"
+
+#include <fmt/core.h>
+
+#include <cctype>
+#include <map>
+#include <optional>
+#include <set>
+#include <tuple>
+#include <unordered_map>
+
+#include "backends/cpp/cpp_extensions.h"
+#include "backends/generator/template_catalog.h"
+#include "backends/meta/template_meta.h"
+#include "backends/meta/template_meta_lookup.h"
+#include "backends/smach/python_extensions.h"
+#include "backends/smach/smach_lint.h"
+#include "backends/tmpl/environment.h"
+#include "ir/support/suggest.h"
+#include "ir/type.h"
+#include "templates/builtin_templates.h"
+
+namespace smachac::backends {
+namespace {
+
+std::vector<std::string> builtinSets(std::string_view target) {
+  if (target == "smach") return {"smach/", "smach_ros/"};
+  if (target == "flexbe") return {"flexbe/"};
+  if (target == "cpp") return {"cpp/"};
+  return {};
+}
+
+/// Keys every template gets from the generator or the IR's structure.
+bool isImplicit(std::string_view key) {
+  return key == "name" || key == "class_name" || key == "uuid" || key == "sm_name" ||
+         key == "autonomy";  // FlexBE autonomy levels, read by the flexbe target
+}
+
+std::set<std::string> givenKeys(const ir::State& s) {
+  std::set<std::string> keys;
+  auto note = [&](bool present, const char* key) {
+    if (present) keys.insert(key);
+  };
+  note(!s.outcomes.empty(), "outcomes");
+  note(!s.input_keys.empty(), "input_keys");
+  note(!s.output_keys.empty(), "output_keys");
+  note(!s.transitions.empty(), "transitions");
+  note(!s.remapping.empty(), "remapping");
+  note(!s.userdata.empty(), "userdata");
+  note(s.params.has_value(), "params");
+  note(!s.callbacks.empty(), "callbacks");
+  note(!s.outcome_map.empty(), "outcome_map");
+  note(s.default_outcome.has_value(), "default_outcome");
+  for (const ir::Argument& a : s.args) keys.insert(a.key.text);
+  return keys;
+}
+
+/// Keys that are not identifiers are reported by check-names already.
+bool isIdentifier(std::string_view key) {
+  if (key.empty() || std::isdigit(static_cast<unsigned char>(key[0]))) return false;
+  for (char c : key) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  }
+  return true;
+}
+
+/// Whether a literal fits one declared type; unknown type names accept anything.
+bool fits(const ir::Value& v, const std::string& type) {
+  using K = ir::ValueKind;
+  K k = v.kind();
+  if (k == K::Expression || k == K::Null) return true;
+  if (type == "str" || type == "string") return k == K::String;
+  if (type == "int") return k == K::Int;
+  if (type == "float" || type == "number") return k == K::Float || k == K::Int;
+  if (type == "bool") return k == K::Bool;
+  if (type.starts_with("list") || type.starts_with("tuple")) return k == K::List;
+  if (type.starts_with("dict")) return k == K::Map;
+  return true;
+}
+
+class Checker {
+ public:
+  Checker(std::string_view target, const std::vector<std::string>& dirs, DiagnosticEmitter& diags)
+      : path_{dirs, builtinSets(target), templates::builtinTemplates()},
+        env_(path_.dirs, path_.builtin_sets, path_.builtins),
+        diags_(diags) {
+    // The target's filters and tests: the engine checks every filter a template names.
+    if (target == "cpp") {
+      cpp::registerCppExtensions(env_, converter_, false);
+    } else {
+      smach::registerPythonExtensions(env_, converter_, false);
+    }
+  }
+
+  void run(const ir::Module& m) {
+    for (ir::StateId id : m.preorder()) check(m.state(id), id == m.root());
+  }
+
+ private:
+  void check(const ir::State& s, bool root) {
+    if (!s.template_name) return;
+    const ir::Name& name = *s.template_name;
+    const std::optional<std::string>& file = resolve(name.text);
+    if (!file) {
+      if (reported_.emplace(name.loc.file, name.loc.line, name.loc.column).second) {
+        std::optional<std::string> match = generator::closestTemplate(name.text, path_);
+        diags_.emit<DiagKind::UnknownTemplate>(name.loc, name.text, generator::describePath(path_),
+                                               didYouMean(match));
+        diags_.fixIt(match);
+      }
+      return;
+    }
+    if (root) return;  // the base template's variables are the script's own keys
+    const std::optional<TemplateMeta>& meta = metaOf(*file);
+    if (!meta) return;
+    checkRequired(s, *meta);
+    checkArguments(s, *meta);
+  }
+
+  /// The template file a script name resolves to, looked up once per name (a lookup lists
+  /// the template folders).
+  const std::optional<std::string>& resolve(const std::string& script_name) {
+    auto it = resolved_.find(script_name);
+    if (it == resolved_.end()) {
+      it = resolved_.emplace(script_name, env_.resolveScriptTemplate(script_name)).first;
+    }
+    return it->second;
+  }
+
+  const std::optional<TemplateMeta>& metaOf(const std::string& file) {
+    auto it = metas_.find(file);
+    if (it != metas_.end()) return it->second;
+    return metas_.emplace(file, lookUpTemplateMeta(env_, path_, file)).first->second;
+  }
+
+  void checkRequired(const ir::State& s, const TemplateMeta& meta) {
+    std::set<std::string> given = givenKeys(s);
+    std::map<int, std::vector<std::string>> groups;
+    for (const TemplateVariable& v : meta.variables) {
+      if (v.alternative_group >= 0) groups[v.alternative_group].push_back(v.name);
+      if (!v.required || given.contains(v.name) || isImplicit(v.name)) continue;
+      diags_.emit<DiagKind::MissingTemplateVariable>(s.name.loc, s.name.text, s.template_name->text,
+                                                     "`" + v.name + "`");
+    }
+    for (const auto& [group, names] : groups) {
+      bool any = false;
+      for (const std::string& n : names) any = any || given.contains(n);
+      if (any) continue;
+      std::string options;
+      for (const std::string& n : names) options += (options.empty() ? "`" : " or `") + n + "`";
+      diags_.emit<DiagKind::MissingTemplateVariable>(s.name.loc, s.name.text, s.template_name->text,
+                                                     "one of " + options);
+    }
+  }
+
+  void checkArguments(const ir::State& s, const TemplateMeta& meta) {
+    std::vector<std::string> declared;
+    for (const TemplateVariable& v : meta.variables) declared.push_back(v.name);
+    for (const ir::Argument& a : s.args) {
+      const TemplateVariable* var = find(meta, a.key.text);
+      if (!var) {
+        if (isImplicit(a.key.text) || !isIdentifier(a.key.text)) continue;
+        std::optional<std::string> match = closestMatch(a.key.text, declared);
+        diags_.emit<DiagKind::UnknownTemplateVariable>(a.key.loc, a.key.text, s.template_name->text,
+                                                       didYouMean(match));
+        diags_.fixIt(match);
+        continue;
+      }
+      checkType(s, a, *var);
+    }
+  }
+
+  void checkType(const ir::State& s, const ir::Argument& a, const TemplateVariable& var) {
+    if (var.types.empty()) return;
+    for (const std::string& t : var.types) {
+      if (fits(a.value, t)) return;
+    }
+    std::string declared;
+    for (const std::string& t : var.types) declared += (declared.empty() ? "" : " or ") + t;
+    diags_.emit<DiagKind::TemplateVariableType>(a.value.loc, a.key.text, s.name.text,
+                                                ir::Type::ofValue(a.value).str(),
+                                                s.template_name->text, declared);
+  }
+
+  static const TemplateVariable* find(const TemplateMeta& meta, const std::string& name) {
+    for (const TemplateVariable& v : meta.variables) {
+      if (v.name == name) return &v;
+    }
+    return nullptr;
+  }
+
+  generator::TemplatePath path_;
+  generator::ValueConverter converter_;
+  tmpl::Environment env_;
+  DiagnosticEmitter& diags_;
+  std::map<std::string, std::optional<TemplateMeta>> metas_;
+  std::unordered_map<std::string, std::optional<std::string>> resolved_;
+  std::set<std::tuple<uint32_t, uint32_t, uint32_t>> reported_;
+};
+
+}  // namespace
+
+bool checkTemplates(const ir::Module& module, std::string_view target,
+                    const std::vector<std::string>& template_dirs, DiagnosticEmitter& diags) {
+  if (builtinSets(target).empty()) return true;
+  size_t errors_before = diags.errorCount();
+  Checker(target, template_dirs, diags).run(module);
+  if (target == "smach") smach::checkSmachDivergences(module, diags);
+  return diags.errorCount() == errors_before;
+}
+
+}  // namespace smachac::backends

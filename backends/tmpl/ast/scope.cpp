@@ -1,0 +1,556 @@
+// Scope analysis (see scope.h). Phase 1 mirrors Jinja2's symbol tracking per frame (which
+// names a frame owns and how they are loaded); phase 2 walks the code in the order Jinja
+// generates it and resolves each name against the finished tables.
+#include "backends/tmpl/ast/scope.h"
+
+#include <algorithm>
+#include <memory>
+#include <set>
+
+#include "backends/tmpl/ast/ast_walk.h"
+
+namespace smachac::tmpl {
+namespace {
+
+using Name = const std::string*;
+
+struct Load {
+  SlotInitKind kind;
+  const struct Symbols* alias_owner = nullptr;
+};
+
+// Jinja's Symbols: refs (names owned by this level), their load instructions and stores.
+struct Symbols {
+  const Symbols* parent;
+  int level;
+  mutable bool capturing = false;  // a closure is created at this level or below
+  std::vector<Name> refs;
+  std::vector<std::pair<Name, Load>> loads;
+  std::vector<Name> stores;
+
+  explicit Symbols(const Symbols* p) : parent(p), level(p ? p->level + 1 : 0) {}
+
+  bool owns(Name n) const { return std::find(refs.begin(), refs.end(), n) != refs.end(); }
+  bool stored(Name n) const { return std::find(stores.begin(), stores.end(), n) != stores.end(); }
+  uint16_t slotOf(Name n) const {
+    return static_cast<uint16_t>(std::find(refs.begin(), refs.end(), n) - refs.begin());
+  }
+
+  const Symbols* findRef(Name n) const {
+    for (const Symbols* s = this; s; s = s->parent) {
+      if (s->owns(n)) return s;
+    }
+    return nullptr;
+  }
+
+  void setLoad(Name n, Load load) {
+    for (auto& entry : loads) {
+      if (entry.first == n) {
+        entry.second = load;
+        return;
+      }
+    }
+    loads.emplace_back(n, load);
+  }
+
+  void defineRef(Name n, Load load) {
+    if (!owns(n)) refs.push_back(n);
+    setLoad(n, load);
+  }
+
+  void addStore(Name n) {
+    if (!stored(n)) stores.push_back(n);
+  }
+
+  void store(Name n) {
+    addStore(n);
+    if (owns(n)) return;
+    if (parent) {
+      if (const Symbols* outer = parent->findRef(n)) {
+        defineRef(n, {SlotInitKind::Alias, outer});
+        return;
+      }
+    }
+    defineRef(n, {SlotInitKind::Undefined});
+  }
+
+  void declareParameter(Name n) {
+    addStore(n);
+    defineRef(n, {SlotInitKind::Parameter});
+  }
+
+  void load(Name n) {
+    if (!findRef(n)) defineRef(n, {SlotInitKind::Resolve});
+  }
+
+  void branchUpdate(const std::vector<Symbols>& branches) {
+    std::vector<std::pair<Name, size_t>> counts;
+    for (const Symbols& b : branches) {
+      for (Name t : b.stores) {
+        if (stored(t)) continue;
+        auto it = std::find_if(counts.begin(), counts.end(), [&](auto& c) { return c.first == t; });
+        if (it == counts.end()) {
+          counts.emplace_back(t, 1);
+        } else {
+          ++it->second;
+        }
+      }
+    }
+    for (const Symbols& b : branches) {
+      for (Name r : b.refs) {
+        if (!owns(r)) refs.push_back(r);
+      }
+      for (const auto& [n, load] : b.loads) setLoad(n, load);
+      for (Name s : b.stores) addStore(s);
+    }
+    for (const auto& [n, count] : counts) {
+      if (count == branches.size()) continue;
+      const Symbols* outer = parent ? parent->findRef(n) : nullptr;
+      setLoad(n, outer ? Load{SlotInitKind::Alias, outer} : Load{SlotInitKind::Resolve});
+    }
+  }
+
+  // Jinja's dump_stores: every name stored in this frame or an outer one.
+  std::vector<Name> dumpStores() const {
+    std::vector<Name> out;
+    for (const Symbols* s = this; s; s = s->parent) {
+      std::vector<Name> sorted = s->stores;
+      std::sort(sorted.begin(), sorted.end(), [](Name a, Name b) { return *a < *b; });
+      for (Name n : sorted) {
+        if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+      }
+    }
+    return out;
+  }
+};
+
+// Jinja's find_undeclared: which of `names` are loaded before any store, not entering blocks.
+class UndeclaredFinder {
+ public:
+  explicit UndeclaredFinder(std::set<std::string> names) : names_(std::move(names)) {}
+
+  void visitBody(const Body& body) {
+    for (const Stmt* s : body) {
+      if (s->kind == StmtKind::Block) continue;
+      forEachPart(s, StmtVisitor{[this](Expr* e) { visitExpr(e); },
+                                 [this](const Body& b) { visitBody(b); }});
+    }
+  }
+
+  void visitExpr(const Expr* e) {
+    if (e->kind == ExprKind::Name) {
+      auto* n = static_cast<const NameExpr*>(e);
+      if (n->ctx == NameCtx::Load && names_.count(*n->name)) {
+        undeclared_.insert(*n->name);
+      } else {
+        names_.erase(*n->name);
+      }
+      return;
+    }
+    forEachChild(e, [this](Expr* c) { visitExpr(c); });
+  }
+
+  bool has(const std::string& name) const { return undeclared_.count(name) > 0; }
+
+ private:
+  std::set<std::string> names_;
+  std::set<std::string> undeclared_;
+};
+
+bool undeclared(const Body& body, const std::string& name) {
+  UndeclaredFinder finder({name});
+  finder.visitBody(body);
+  return finder.has(name);
+}
+
+bool containsScopedBlock(const Body& body) {
+  bool found = false;
+  std::function<void(const Body&)> visit = [&](const Body& b) {
+    for (const Stmt* s : b) {
+      if (s->kind == StmtKind::Block && static_cast<const BlockStmt*>(s)->scoped) found = true;
+      forEachPart(s, StmtVisitor{[](Expr*) {}, visit});
+    }
+  };
+  visit(body);
+  return found;
+}
+
+class Analyzer {
+ public:
+  void analyzeRoot(ParsedTemplate& parsed, FrameLayout& layout) {
+    Symbols& table = newTable(nullptr);
+    for (Stmt* s : parsed.body) visitStmt(s, table);
+    resolveBody(parsed.body, table, true);
+    layout = layoutOf(table);
+  }
+
+ private:
+  Symbols& newTable(const Symbols* parent) {
+    tables_.push_back(std::make_unique<Symbols>(parent));
+    return *tables_.back();
+  }
+
+  // --- phase 1: Jinja's FrameSymbolVisitor -----------------------------------------------
+
+  void visitExpr(Expr* e, Symbols& sym, bool as_param = false) {
+    if (e->kind == ExprKind::Name) {
+      auto* n = static_cast<NameExpr*>(e);
+      if (as_param || n->ctx == NameCtx::Param) {
+        sym.declareParameter(n->name);
+      } else if (n->ctx == NameCtx::Store) {
+        sym.store(n->name);
+      } else {
+        sym.load(n->name);
+      }
+      return;
+    }
+    if (e->kind == ExprKind::NamespaceRef) {
+      sym.load(static_cast<NamespaceRefExpr*>(e)->ns->name);
+      return;
+    }
+    forEachChild(e, [&](Expr* c) { visitExpr(c, sym, as_param); });
+  }
+
+  void visitBody(const Body& body, Symbols& sym) {
+    for (Stmt* s : body) visitStmt(s, sym);
+  }
+
+  // One if/elif chain element the way Jinja nests elifs: test, then body/elif/else branches.
+  void visitIf(Expr* test, const Body& body, Symbols& sym) {
+    visitExpr(test, sym);
+    Symbols body_sym = sym;
+    visitBody(body, body_sym);
+    sym.branchUpdate({body_sym, sym, sym});
+  }
+
+  void visitStmt(Stmt* stmt, Symbols& sym) {
+    switch (stmt->kind) {
+      case StmtKind::Text:
+      case StmtKind::Block:
+        return;
+      case StmtKind::If: {
+        auto* s = static_cast<IfStmt*>(stmt);
+        visitExpr(s->branches[0].first, sym);
+        Symbols body_sym = sym;
+        visitBody(s->branches[0].second, body_sym);
+        Symbols elif_sym = sym;
+        for (size_t i = 1; i < s->branches.size(); ++i) {
+          visitIf(s->branches[i].first, s->branches[i].second, elif_sym);
+        }
+        Symbols else_sym = sym;
+        visitBody(s->orelse, else_sym);
+        sym.branchUpdate({body_sym, elif_sym, else_sym});
+        return;
+      }
+      case StmtKind::For:
+        visitExpr(static_cast<ForStmt*>(stmt)->iter, sym);
+        return;
+      case StmtKind::Macro:
+        sym.store(static_cast<MacroStmt*>(stmt)->name);
+        return;
+      case StmtKind::CallBlock:
+        visitExpr(static_cast<CallBlockStmt*>(stmt)->call, sym);
+        return;
+      case StmtKind::FilterBlock:
+        visitExpr(static_cast<FilterBlockStmt*>(stmt)->filter, sym);
+        return;
+      case StmtKind::With:
+        for (Expr* v : static_cast<WithStmt*>(stmt)->values) visitExpr(v, sym);
+        return;
+      case StmtKind::SetBlock:
+        visitExpr(static_cast<SetBlockStmt*>(stmt)->target, sym);
+        return;
+      case StmtKind::Set: {
+        auto* s = static_cast<SetStmt*>(stmt);
+        visitExpr(s->value, sym);
+        visitExpr(s->target, sym);
+        return;
+      }
+      case StmtKind::Import: {
+        auto* s = static_cast<ImportStmt*>(stmt);
+        visitExpr(s->template_name, sym);
+        sym.store(s->target->name);
+        return;
+      }
+      case StmtKind::FromImport: {
+        auto* s = static_cast<FromImportStmt*>(stmt);
+        visitExpr(s->template_name, sym);
+        for (const ImportedName& n : s->names) sym.store(n.alias->name);
+        return;
+      }
+      default:
+        forEachPart(stmt, StmtVisitor{[&](Expr* e) { visitExpr(e, sym); },
+                                      [&](const Body& b) { visitBody(b, sym); }});
+    }
+  }
+
+  // --- phase 2: resolution in code-generation order ----------------------------------------
+
+  SlotRef refFor(Name n, Symbols& sym) {
+    const Symbols* owner = sym.findRef(n);
+    if (!owner) {
+      sym.defineRef(n, {SlotInitKind::Resolve});
+      owner = &sym;
+    }
+    return SlotRef{static_cast<uint16_t>(sym.level - owner->level), owner->slotOf(n), true};
+  }
+
+  void resolveExpr(Expr* e, Symbols& sym) {
+    if (e->kind == ExprKind::Name) {
+      auto* n = static_cast<NameExpr*>(e);
+      n->ref = refFor(n->name, sym);
+      return;
+    }
+    forEachChild(e, [&](Expr* c) { resolveExpr(c, sym); });
+  }
+
+  std::vector<LocalRef> localsOf(Symbols& sym) {
+    std::vector<LocalRef> out;
+    for (Name n : sym.dumpStores()) out.push_back({n, refFor(n, sym)});
+    return out;
+  }
+
+  void resolveBody(const Body& body, Symbols& sym, bool root) {
+    for (Stmt* s : body) resolveStmt(s, sym, root);
+  }
+
+  void resolveStmt(Stmt* stmt, Symbols& sym, bool root) {
+    switch (stmt->kind) {
+      case StmtKind::Text:
+        return;
+      case StmtKind::Print:
+        resolveExpr(static_cast<PrintStmt*>(stmt)->expr, sym);
+        return;
+      case StmtKind::If: {
+        auto* s = static_cast<IfStmt*>(stmt);
+        for (auto& [test, body] : s->branches) {
+          resolveExpr(test, sym);
+          resolveBody(body, sym, root);
+        }
+        resolveBody(s->orelse, sym, root);
+        return;
+      }
+      case StmtKind::For:
+        return analyzeFor(static_cast<ForStmt*>(stmt), sym);
+      case StmtKind::Block: {
+        auto* s = static_cast<BlockStmt*>(stmt);
+        s->toplevel = root;
+        if (s->scoped) s->locals = localsOf(sym);
+        return analyzeBlock(s);
+      }
+      case StmtKind::Extends:
+        if (!root) throw SyntaxFault{stmt->pos, "`extends` can only be used at the top level"};
+        resolveExpr(static_cast<ExtendsStmt*>(stmt)->template_name, sym);
+        return;
+      case StmtKind::Include: {
+        auto* s = static_cast<IncludeStmt*>(stmt);
+        resolveExpr(s->template_name, sym);
+        if (s->with_context) s->locals = localsOf(sym);
+        return;
+      }
+      case StmtKind::Import: {
+        auto* s = static_cast<ImportStmt*>(stmt);
+        resolveExpr(s->template_name, sym);
+        if (s->with_context) s->locals = localsOf(sym);
+        resolveExpr(s->target, sym);
+        s->toplevel = root;
+        return;
+      }
+      case StmtKind::FromImport: {
+        auto* s = static_cast<FromImportStmt*>(stmt);
+        resolveExpr(s->template_name, sym);
+        if (s->with_context) s->locals = localsOf(sym);
+        for (ImportedName& n : s->names) resolveExpr(n.alias, sym);
+        s->toplevel = root;
+        return;
+      }
+      case StmtKind::Macro: {
+        auto* s = static_cast<MacroStmt*>(stmt);
+        markCapturing(sym);
+        resolveExpr(s->target, sym);
+        s->toplevel = root;
+        return analyzeMacro(s, sym);
+      }
+      case StmtKind::CallBlock: {
+        auto* s = static_cast<CallBlockStmt*>(stmt);
+        markCapturing(sym);
+        resolveExpr(s->call, sym);
+        return analyzeMacro(s, sym);
+      }
+      case StmtKind::Set: {
+        auto* s = static_cast<SetStmt*>(stmt);
+        resolveExpr(s->value, sym);
+        resolveExpr(s->target, sym);
+        s->toplevel = root;
+        return;
+      }
+      case StmtKind::SetBlock:
+        return analyzeSetBlock(static_cast<SetBlockStmt*>(stmt), sym, root);
+      case StmtKind::FilterBlock:
+        return analyzeFilterBlock(static_cast<FilterBlockStmt*>(stmt), sym);
+      case StmtKind::With:
+        return analyzeWith(static_cast<WithStmt*>(stmt), sym);
+      case StmtKind::Do:
+        resolveExpr(static_cast<DoStmt*>(stmt)->expr, sym);
+        return;
+    }
+  }
+
+  static void markCapturing(const Symbols& sym) {
+    for (const Symbols* s = &sym; s; s = s->parent) s->capturing = true;
+  }
+
+  // --- nested frames ---------------------------------------------------------------------
+
+  void checkLoopNotAssigned(ForStmt* s) {
+    std::function<void(Expr*)> check_expr = [&](Expr* e) {
+      if (e->kind == ExprKind::Name) {
+        auto* n = static_cast<NameExpr*>(e);
+        if (n->ctx != NameCtx::Load && *n->name == "loop") {
+          throw SyntaxFault{e->pos, "cannot assign to the special `loop` variable"};
+        }
+        return;
+      }
+      forEachChild(e, check_expr);
+    };
+    std::function<void(const Body&)> check_body = [&](const Body& body) {
+      for (Stmt* st : body) forEachPart(st, StmtVisitor{check_expr, check_body});
+    };
+    check_expr(s->target);
+    check_body(s->body);
+  }
+
+  static void collectTargetNames(Expr* target, std::vector<NameExpr*>& out) {
+    if (target->kind == ExprKind::Name) {
+      out.push_back(static_cast<NameExpr*>(target));
+      return;
+    }
+    forEachChild(target, [&](Expr* c) { collectTargetNames(c, out); });
+  }
+
+  void analyzeFor(ForStmt* s, Symbols& outer) {
+    checkLoopNotAssigned(s);
+    resolveExpr(s->iter, outer);
+    Symbols& loop = newTable(&outer);
+    bool extended = undeclared(s->body, "loop") || containsScopedBlock(s->body);
+    if (extended) loop.declareParameter(intern("loop"));
+    visitExpr(s->target, loop, true);
+    visitBody(s->body, loop);
+    Symbols& else_sym = newTable(&outer);
+    visitBody(s->orelse, else_sym);
+    Symbols& test = newTable(&outer);
+    if (s->filter) {
+      visitExpr(s->target, test, true);
+      visitExpr(s->filter, test);
+      resolveExpr(s->filter, test);
+      std::vector<NameExpr*> names;
+      collectTargetNames(s->target, names);
+      for (NameExpr* n : names) s->test_target_slots.push_back(test.slotOf(n->name));
+    }
+    resolveExpr(s->target, loop);
+    resolveBody(s->body, loop, false);
+    resolveBody(s->orelse, else_sym, false);
+    if (extended) s->loop_slot = loop.slotOf(intern("loop"));
+    s->loop_frame = layoutOf(loop);
+    s->else_frame = layoutOf(else_sym);
+    s->test_frame = layoutOf(test);
+  }
+
+  void analyzeBlock(BlockStmt* s) {
+    Symbols& sym = newTable(nullptr);
+    if (undeclared(s->body, "super")) sym.declareParameter(intern("super"));
+    visitBody(s->body, sym);
+    resolveBody(s->body, sym, false);
+    if (sym.owns(intern("super"))) s->super_slot = sym.slotOf(intern("super"));
+    s->frame = layoutOf(sym);
+  }
+
+  void analyzeMacro(MacroStmt* s, Symbols& outer) {
+    Symbols& sym = newTable(&outer);
+    UndeclaredFinder finder({"caller", "kwargs", "varargs"});
+    finder.visitBody(s->body);
+    auto has_param = [&](const char* n) {
+      return std::any_of(s->params.begin(), s->params.end(),
+                         [&](NameExpr* p) { return *p->name == n; });
+    };
+    for (NameExpr* p : s->params) visitExpr(p, sym);
+    for (const char* special : {"caller", "kwargs", "varargs"}) {
+      if (finder.has(special) && !has_param(special)) sym.declareParameter(intern(special));
+    }
+    if (finder.has("caller") && has_param("caller")) {
+      size_t index = 0;
+      while (*s->params[index]->name != "caller") ++index;
+      if (index + s->defaults.size() < s->params.size()) {
+        throw SyntaxFault{s->params[index]->pos,
+                          "the special `caller` argument must be omitted or given a default"};
+      }
+    }
+    for (Expr* d : s->defaults) visitExpr(d, sym);
+    visitBody(s->body, sym);
+    for (NameExpr* p : s->params) resolveExpr(p, sym);
+    for (Expr* d : s->defaults) resolveExpr(d, sym);
+    resolveBody(s->body, sym, false);
+    auto slot_if_declared = [&](const char* n) {
+      return finder.has(n) && !has_param(n) ? static_cast<int>(sym.slotOf(intern(n))) : -1;
+    };
+    s->caller_slot = slot_if_declared("caller");
+    s->kwargs_slot = slot_if_declared("kwargs");
+    s->varargs_slot = slot_if_declared("varargs");
+    s->frame = layoutOf(sym);
+  }
+
+  void analyzeSetBlock(SetBlockStmt* s, Symbols& outer, bool root) {
+    Symbols& sym = newTable(&outer);
+    visitBody(s->body, sym);
+    if (s->filter) visitExpr(s->filter, sym);
+    resolveBody(s->body, sym, false);
+    if (s->filter) resolveExpr(s->filter, sym);
+    resolveExpr(s->target, outer);
+    s->toplevel = root;
+    s->frame = layoutOf(sym);
+  }
+
+  void analyzeFilterBlock(FilterBlockStmt* s, Symbols& outer) {
+    Symbols& sym = newTable(&outer);
+    visitBody(s->body, sym);
+    visitExpr(s->filter, sym);
+    resolveBody(s->body, sym, false);
+    resolveExpr(s->filter, sym);
+    s->frame = layoutOf(sym);
+  }
+
+  void analyzeWith(WithStmt* s, Symbols& outer) {
+    for (Expr* v : s->values) resolveExpr(v, outer);
+    Symbols& sym = newTable(&outer);
+    for (Expr* t : s->targets) visitExpr(t, sym);
+    visitBody(s->body, sym);
+    for (Expr* t : s->targets) resolveExpr(t, sym);
+    resolveBody(s->body, sym, false);
+    s->frame = layoutOf(sym);
+  }
+
+  static FrameLayout layoutOf(const Symbols& sym) {
+    FrameLayout layout;
+    layout.num_slots = static_cast<uint16_t>(sym.refs.size());
+    layout.capturable = sym.capturing;
+    for (const auto& [n, load] : sym.loads) {
+      SlotInit init{load.kind, sym.slotOf(n), n, hashString(*n), {}};
+      if (load.kind == SlotInitKind::Alias) {
+        init.alias = SlotRef{static_cast<uint16_t>(sym.level - load.alias_owner->level),
+                             load.alias_owner->slotOf(n), true};
+      }
+      layout.inits.push_back(init);
+    }
+    return layout;
+  }
+
+  std::vector<std::unique_ptr<Symbols>> tables_;
+};
+
+}  // namespace
+
+void analyzeScopes(ParsedTemplate& parsed, FrameLayout& root_frame) {
+  Analyzer().analyzeRoot(parsed, root_frame);
+}
+
+}  // namespace smachac::tmpl

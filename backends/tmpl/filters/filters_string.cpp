@@ -1,0 +1,237 @@
+// String filters: lower, upper, capitalize, title, trim, replace, indent, center, wordwrap,
+// wordcount, truncate, format, string, escape/e, forceescape, safe, tojson.
+#include <algorithm>
+
+#include "backends/tmpl/error.h"
+#include "backends/tmpl/filters/builtins.h"
+#include "backends/tmpl/filters/text_wrap.h"
+#include "backends/tmpl/values/py_format.h"
+#include "backends/tmpl/values/string_ops.h"
+#include "backends/tmpl/values/value_ops.h"
+#include "backends/tmpl/values/value_print.h"
+#include "ir/support/unicode.h"
+
+namespace smachac::tmpl {
+namespace {
+
+using Args = const CallArgs&;
+
+// Jinja's soft_str: strings unchanged (markup kept), anything else through str().
+Value softStr(const Value& v) { return v.isString() ? v : Value::string(str(v)); }
+
+Value lowerFilter(Exec&, const Value& in, Args args) {
+  ArgBinder(args, "lower", {});
+  return Value::string(unicode::toLower(softStr(in).s()), in.isMarkup());
+}
+
+Value upperFilter(Exec&, const Value& in, Args args) {
+  ArgBinder(args, "upper", {});
+  return Value::string(unicode::toUpper(softStr(in).s()), in.isMarkup());
+}
+
+Value capitalizeFilter(Exec&, const Value& in, Args args) {
+  ArgBinder(args, "capitalize", {});
+  return Value::string(unicode::capitalize(softStr(in).s()), in.isMarkup());
+}
+
+// Jinja's title: split before runs of `-`, whitespace, `(`, `{`, `[`, `<`; capitalise each piece.
+Value titleFilter(Exec&, const Value& in, Args args) {
+  ArgBinder(args, "title", {});
+  const std::string s = softStr(in).s();
+  auto separator = [](char32_t c) {
+    return c == '-' || c == '(' || c == '{' || c == '[' || c == '<' || unicode::isSpace(c);
+  };
+  std::string out;
+  size_t pos = 0;
+  while (pos < s.size()) {
+    size_t start = pos;
+    size_t next = pos;
+    bool sep = separator(unicode::decode(s, next));
+    while (pos < s.size()) {
+      size_t probe = pos;
+      if (separator(unicode::decode(s, probe)) != sep) break;
+      pos = probe;
+    }
+    std::string_view piece(s.data() + start, pos - start);
+    if (sep) {
+      out += piece;
+      continue;
+    }
+    size_t first_end = 0;
+    unicode::decode(piece, first_end);
+    out += unicode::toUpper(piece.substr(0, first_end));
+    out += unicode::toLower(piece.substr(first_end));
+  }
+  return Value::string(std::move(out), in.isMarkup());
+}
+
+Value trimFilter(Exec&, const Value& in, Args args) {
+  ArgBinder b(args, "trim", {"chars"});
+  const Value* chars = b.get(0);
+  const std::string* set = chars && !chars->isNone() ? &stringArg(*chars, "trim") : nullptr;
+  return Value::string(stripString(softStr(in).s(), set, true, true));
+}
+
+Value replaceFilter(Exec&, const Value& in, Args args) {
+  ArgBinder b(args, "replace", {"old", "new", "count"});
+  int64_t count = b.has(2) && !b.get(2)->isNone() ? b.getInt(2, -1) : -1;
+  return Value::string(replaceString(str(in), str(b.require(0)), str(b.require(1)), count));
+}
+
+Value indentFilter(Exec&, const Value& in, Args args) {
+  ArgBinder b(args, "indent", {"width", "first", "blank"});
+  std::string indention;
+  if (b.has(0) && b.get(0)->isString()) {
+    indention = b.get(0)->s();
+  } else {
+    int64_t width = b.getInt(0, 4);
+    if (width > 0) {
+      checkSize(static_cast<size_t>(width), "string");
+      indention.assign(static_cast<size_t>(width), ' ');
+    }
+  }
+  if (!in.isString()) {
+    if (in.isUndefined()) fail(in.undefinedMessage());
+    fail("`indent` expects a string, not `" + std::string(typeName(in)) + "`");
+  }
+  bool first = b.getBool(1, false);
+  const std::string& input = in.s();
+  if (!mayHaveLineBreak(input))
+    return Value::string(first ? indention + input : input, in.isMarkup());
+  std::string text = input + "\n";  // as Jinja does, so that a final line break is kept
+  std::vector<std::string_view> lines = lineViews(text, false);
+  bool blank = b.getBool(2, false);
+  std::string out;
+  out.reserve(text.size() + lines.size() * indention.size());
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (i > 0) out += '\n';
+    if (i > 0 && (blank || !lines[i].empty())) out += indention;
+    out += lines[i];
+    checkSize(out.size(), "string");
+  }
+  if (first) out = indention + out;
+  return Value::string(std::move(out), in.isMarkup());
+}
+
+Value centerFilter(Exec&, const Value& in, Args args) {
+  ArgBinder b(args, "center", {"width"});
+  return Value::string(centerString(softStr(in).s(), b.getInt(0, 80), " "));
+}
+
+Value wordwrapFilter(Exec&, const Value& in, Args args) {
+  ArgBinder b(args, "wordwrap", {"width", "break_long_words", "wrapstring", "break_on_hyphens"});
+  int64_t width = b.getInt(0, 79);
+  bool break_long = b.getBool(1, true);
+  std::string wrapstring = b.has(2) && !b.get(2)->isNone() ? str(*b.get(2)) : "\n";
+  bool hyphens = b.getBool(3, true);
+  std::string out;
+  std::vector<std::string> paragraphs = splitLines(stringArg(in, "wordwrap"), false);
+  for (size_t i = 0; i < paragraphs.size(); ++i) {
+    if (i > 0) out += wrapstring;
+    std::vector<std::string> lines = wrapText(paragraphs[i], width, break_long, hyphens);
+    for (size_t j = 0; j < lines.size(); ++j) {
+      if (j > 0) out += wrapstring;
+      out += lines[j];
+    }
+    checkSize(out.size(), "string");
+  }
+  return Value::string(std::move(out));
+}
+
+Value wordcountFilter(Exec&, const Value& in, Args args) {
+  ArgBinder(args, "wordcount", {});
+  std::string s = str(in);
+  int64_t words = 0;
+  bool in_word = false;
+  for (size_t pos = 0; pos < s.size();) {
+    char32_t c = unicode::decode(s, pos);
+    bool word = c == '_' || unicode::isAlnum(c);
+    if (word && !in_word) ++words;
+    in_word = word;
+  }
+  return Value::integer(words);
+}
+
+Value truncateFilter(Exec&, const Value& in, Args args) {
+  ArgBinder b(args, "truncate", {"length", "killwords", "end", "leeway"});
+  std::string s = stringArg(in, "truncate");
+  int64_t length = b.getInt(0, 255);
+  std::string end = b.has(2) ? str(*b.get(2)) : "...";
+  int64_t leeway = b.has(3) && !b.get(3)->isNone() ? b.getInt(3, 5) : 5;
+  auto end_len = static_cast<int64_t>(unicode::length(end));
+  if (length < end_len)
+    fail("expected length >= " + std::to_string(end_len) + ", got " + std::to_string(length));
+  if (leeway < 0) fail("expected leeway >= 0, got " + std::to_string(leeway));
+  std::vector<Value> chars = iterate(Value::string(s));
+  if (static_cast<int64_t>(chars.size()) <= length + leeway) return Value::string(s);
+  std::string head;
+  for (int64_t i = 0; i < length - end_len; ++i) head += chars[static_cast<size_t>(i)].s();
+  if (b.getBool(1, false)) return Value::string(head + end);
+  size_t space = head.rfind(' ');
+  return Value::string((space == std::string::npos ? head : head.substr(0, space)) + end);
+}
+
+Value formatFilter(Exec&, const Value& in, Args args) {
+  if (!args.positional.empty() && !args.keyword.empty()) {
+    fail("`format` cannot handle positional and keyword arguments at the same time");
+  }
+  Value fmt = softStr(in);
+  if (!args.keyword.empty()) {
+    Value kwargs = Value::newDict();
+    for (const auto& [k, v] : args.keyword) kwargs.dict().setString(*k, v);
+    return percentFormat(fmt, kwargs);
+  }
+  return percentFormat(fmt, Value::newTuple({args.positional.begin(), args.positional.end()}));
+}
+
+Value stringFilter(Exec&, const Value& in, Args args) {
+  ArgBinder(args, "string", {});
+  return softStr(in);
+}
+
+Value escapeFilter(Exec&, const Value& in, Args args) {
+  ArgBinder(args, "escape", {});
+  if (in.isMarkup()) return in;
+  return Value::string(htmlEscape(str(in)), true);
+}
+
+Value forceescapeFilter(Exec&, const Value& in, Args args) {
+  ArgBinder(args, "forceescape", {});
+  return Value::string(htmlEscape(str(in)), true);
+}
+
+Value safeFilter(Exec&, const Value& in, Args args) {
+  ArgBinder(args, "safe", {});
+  return Value::string(str(in), true);
+}
+
+Value tojsonFilter(Exec&, const Value& in, Args args) {
+  ArgBinder b(args, "tojson", {"indent"});
+  int64_t indent = b.has(0) && !b.get(0)->isNone() ? b.getInt(0, 0) : -1;
+  return Value::string(toJson(in, indent), true);
+}
+
+}  // namespace
+
+void registerStringFilters(Registry& r) {
+  r.addFilter("lower", lowerFilter);
+  r.addFilter("upper", upperFilter);
+  r.addFilter("capitalize", capitalizeFilter);
+  r.addFilter("title", titleFilter);
+  r.addFilter("trim", trimFilter);
+  r.addFilter("replace", replaceFilter);
+  r.addFilter("indent", indentFilter);
+  r.addFilter("center", centerFilter);
+  r.addFilter("wordwrap", wordwrapFilter);
+  r.addFilter("wordcount", wordcountFilter);
+  r.addFilter("truncate", truncateFilter);
+  r.addFilter("format", formatFilter);
+  r.addFilter("string", stringFilter);
+  r.addFilter("e", escapeFilter);
+  r.addFilter("escape", escapeFilter);
+  r.addFilter("forceescape", forceescapeFilter);
+  r.addFilter("safe", safeFilter);
+  r.addFilter("tojson", tojsonFilter);
+}
+
+}  // namespace smachac::tmpl

@@ -1,0 +1,486 @@
+// The lexer (see lexer.h). It follows Jinja2's lexing rules: the earliest `{{`, `{%`, `{#`
+// or `{% raw %}` opens a tag; `-` strips whitespace on that side, `+` disables lstrip;
+// with lstrip_blocks, spaces before a `{%`/`{#` tag that starts a line are dropped.
+#include "backends/tmpl/lexer/lexer.h"
+
+#include "ir/support/unicode.h"
+
+namespace smachac::tmpl {
+namespace {
+
+enum class TagKind { Raw, Comment, Block, Variable };
+
+struct TagStart {
+  size_t pos;  // offset of `{`
+  TagKind kind;
+  char sign;    // '-', '+' or 0
+  size_t body;  // offset after the opener (after the whole `{% raw %}` for raw)
+};
+
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isAsciiNameStart(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+
+class Lexer {
+ public:
+  Lexer(std::string_view src, const LexerOptions& options) : src_(src), options_(options) {}
+
+  std::vector<Token> run() {
+    while (pos_ < src_.size()) {
+      TagStart tag;
+      if (!findTag(pos_, tag)) {
+        emit(Tok::Data, pos_, src_.substr(pos_));
+        break;
+      }
+      emitLeadingData(tag);
+      lexTag(tag);
+    }
+    emit(Tok::Eof, static_cast<uint32_t>(src_.size()), {});
+    return std::move(out_);
+  }
+
+ private:
+  [[noreturn]] void failAt(size_t pos, std::string message) {
+    throw SyntaxFault{static_cast<uint32_t>(pos), std::move(message)};
+  }
+
+  void emit(Tok kind, size_t pos, std::string_view text) {
+    out_.push_back(Token{kind, static_cast<uint32_t>(pos), text});
+  }
+
+  size_t skipSpace(size_t p) const {
+    while (p < src_.size()) {
+      size_t next = p;
+      if (!unicode::isSpace(unicode::decode(src_, next))) break;
+      p = next;
+    }
+    return p;
+  }
+
+  bool startsWith(size_t p, std::string_view s) const { return src_.substr(p, s.size()) == s; }
+
+  // `{%` [-+]? \s* raw \s* (-%}\s* | %}) at p; sets the end of the match.
+  bool matchRawBegin(size_t p, char& sign, size_t& end) const {
+    size_t q = p + 2;
+    sign = 0;
+    if (q < src_.size() && (src_[q] == '-' || src_[q] == '+')) sign = src_[q++];
+    q = skipSpace(q);
+    if (!startsWith(q, "raw")) return false;
+    q = skipSpace(q + 3);
+    if (startsWith(q, "-%}")) {
+      end = skipSpace(q + 3);
+      return true;
+    }
+    if (startsWith(q, "%}")) {
+      end = q + 2;
+      return true;
+    }
+    return false;
+  }
+
+  bool findTag(size_t from, TagStart& tag) const {
+    for (size_t p = src_.find('{', from); p != std::string_view::npos; p = src_.find('{', p + 1)) {
+      if (p + 1 >= src_.size()) return false;
+      char c = src_[p + 1];
+      if (c != '%' && c != '{' && c != '#') continue;
+      tag.pos = p;
+      size_t end;
+      if (c == '%' && matchRawBegin(p, tag.sign, end)) {
+        tag.kind = TagKind::Raw;
+        tag.body = end;
+        return true;
+      }
+      tag.kind = c == '%' ? TagKind::Block : c == '{' ? TagKind::Variable : TagKind::Comment;
+      char s = p + 2 < src_.size() ? src_[p + 2] : 0;
+      tag.sign = (s == '-' || s == '+') ? s : 0;
+      tag.body = p + 2 + (tag.sign ? 1 : 0);
+      return true;
+    }
+    return false;
+  }
+
+  // Applies `-` stripping or lstrip_blocks to the text before a tag (Jinja's OptionalLStrip).
+  std::string_view stripBeforeTag(std::string_view text, char sign, bool variable) const {
+    if (sign == '-') return unicode::strip(text, false, true);
+    if (sign == '+' || !options_.lstrip_blocks || variable) return text;
+    size_t line_start = text.rfind('\n');
+    line_start = line_start == std::string_view::npos ? 0 : line_start + 1;
+    if (line_start == 0 && !line_starting_) return text;
+    std::string_view tail = text.substr(line_start);
+    if (tail.empty() || !unicode::strip(tail).empty()) return text;
+    return text.substr(0, line_start);
+  }
+
+  void emitLeadingData(const TagStart& tag) {
+    std::string_view text = src_.substr(pos_, tag.pos - pos_);
+    text = stripBeforeTag(text, tag.sign, tag.kind == TagKind::Variable);
+    if (!text.empty()) emit(Tok::Data, pos_, text);
+  }
+
+  void lexTag(const TagStart& tag) {
+    switch (tag.kind) {
+      case TagKind::Raw:
+        return lexRaw(tag);
+      case TagKind::Comment:
+        return lexComment(tag);
+      case TagKind::Block:
+      case TagKind::Variable:
+        return lexCode(tag);
+    }
+  }
+
+  void finish(size_t end) {
+    line_starting_ = end > 0 && src_[end - 1] == '\n';
+    pos_ = end;
+  }
+
+  void lexComment(const TagStart& tag) {
+    for (size_t i = tag.body; i < src_.size(); ++i) {
+      if (startsWith(i, "+#}")) return finish(i + 3);
+      if (startsWith(i, "-#}")) return finish(skipSpace(i + 3));
+      if (startsWith(i, "#}")) return finish(i + 2);
+    }
+    failAt(tag.pos, "missing end of comment tag");
+  }
+
+  void lexRaw(const TagStart& tag) {
+    line_starting_ = tag.body > 0 && src_[tag.body - 1] == '\n';
+    for (size_t p = src_.find("{%", tag.body); p != std::string_view::npos;
+         p = src_.find("{%", p + 1)) {
+      size_t q = p + 2;
+      char sign = 0;
+      if (q < src_.size() && (src_[q] == '-' || src_[q] == '+')) sign = src_[q++];
+      q = skipSpace(q);
+      if (!startsWith(q, "endraw")) continue;
+      q = skipSpace(q + 6);
+      size_t end = 0;
+      if (startsWith(q, "+%}")) {
+        end = q + 3;
+      } else if (startsWith(q, "-%}")) {
+        end = skipSpace(q + 3);
+      } else if (startsWith(q, "%}")) {
+        end = q + 2;
+      } else {
+        continue;
+      }
+      std::string_view text = stripBeforeTag(src_.substr(tag.body, p - tag.body), sign, false);
+      if (!text.empty()) emit(Tok::Data, tag.body, text);
+      return finish(end);
+    }
+    failAt(tag.pos, "missing end of raw directive");
+  }
+
+  // Matches the end of a `{{ }}` or `{% %}` tag at pos_.
+  bool matchEnd(bool variable, size_t& end) const {
+    if (variable) {
+      if (startsWith(pos_, "-}}")) return end = skipSpace(pos_ + 3), true;
+      if (startsWith(pos_, "}}")) return end = pos_ + 2, true;
+      return false;
+    }
+    if (startsWith(pos_, "+%}")) return end = pos_ + 3, true;
+    if (startsWith(pos_, "-%}")) return end = skipSpace(pos_ + 3), true;
+    if (startsWith(pos_, "%}")) return end = pos_ + 2, true;
+    return false;
+  }
+
+  void lexCode(const TagStart& tag) {
+    bool variable = tag.kind == TagKind::Variable;
+    emit(variable ? Tok::VariableBegin : Tok::BlockBegin, tag.pos,
+         src_.substr(tag.pos, tag.body - tag.pos));
+    pos_ = tag.body;
+    balance_.clear();
+    while (pos_ < src_.size()) {
+      size_t end;
+      if (balance_.empty() && matchEnd(variable, end)) {
+        emit(variable ? Tok::VariableEnd : Tok::BlockEnd, pos_, src_.substr(pos_, end - pos_));
+        return finish(end);
+      }
+      lexCodeToken();
+    }
+  }
+
+  void lexCodeToken() {
+    size_t next = pos_;
+    char32_t cp = unicode::decode(src_, next);
+    if (unicode::isSpace(cp)) {
+      pos_ = skipSpace(pos_);
+      return;
+    }
+    if (lexFloat() || lexInteger() || lexName() || lexString() || lexOperator()) return;
+    std::string shown;
+    unicode::encode(shown, cp);
+    failAt(pos_, "unexpected char `" + shown + "`");
+  }
+
+  // (\d+_)*\d+
+  bool digits(size_t& p) const {
+    if (p >= src_.size() || !isDigit(src_[p])) return false;
+    while (p < src_.size() && isDigit(src_[p])) ++p;
+    while (p + 1 < src_.size() && src_[p] == '_' && isDigit(src_[p + 1])) {
+      p += 1;
+      while (p < src_.size() && isDigit(src_[p])) ++p;
+    }
+    return true;
+  }
+
+  bool exponent(size_t& p) const {
+    if (p >= src_.size() || (src_[p] != 'e' && src_[p] != 'E')) return false;
+    size_t q = p + 1;
+    if (q < src_.size() && (src_[q] == '+' || src_[q] == '-')) ++q;
+    if (!digits(q)) return false;
+    p = q;
+    return true;
+  }
+
+  bool lexFloat() {
+    if (pos_ > 0 && src_[pos_ - 1] == '.') return false;
+    size_t p = pos_;
+    if (!digits(p)) return false;
+    size_t with_fraction = p;
+    bool has_fraction = false;
+    if (with_fraction < src_.size() && src_[with_fraction] == '.') {
+      size_t q = with_fraction + 1;
+      if (digits(q)) {
+        with_fraction = q;
+        has_fraction = true;
+      }
+    }
+    size_t end = with_fraction;
+    if (!exponent(end)) {
+      if (!has_fraction) return false;
+      end = with_fraction;
+    }
+    emit(Tok::Float, pos_, src_.substr(pos_, end - pos_));
+    pos_ = end;
+    return true;
+  }
+
+  bool prefixedDigits(size_t& p, std::string_view allowed) const {
+    size_t count = 0;
+    while (p < src_.size()) {
+      size_t q = p;
+      if (src_[q] == '_') ++q;
+      if (q >= src_.size() ||
+          allowed.find(static_cast<char>(src_[q] | 0x20)) == std::string_view::npos)
+        break;
+      p = q + 1;
+      ++count;
+    }
+    return count > 0;
+  }
+
+  bool lexInteger() {
+    size_t p = pos_;
+    if (p >= src_.size() || !isDigit(src_[p])) return false;
+    if (src_[p] == '0' && p + 1 < src_.size()) {
+      char base = static_cast<char>(src_[p + 1] | 0x20);
+      size_t q = p + 2;
+      std::string_view allowed = base == 'b'   ? "01"
+                                 : base == 'o' ? "01234567"
+                                 : base == 'x' ? "0123456789abcdef"
+                                               : "";
+      if (!allowed.empty() && prefixedDigits(q, allowed)) {
+        emit(Tok::Integer, pos_, src_.substr(pos_, q - pos_));
+        pos_ = q;
+        return true;
+      }
+    }
+    if (src_[p] == '0') {
+      ++p;
+      while (p < src_.size()) {
+        size_t q = p + (src_[p] == '_' ? 1 : 0);
+        if (q >= src_.size() || src_[q] != '0') break;
+        p = q + 1;
+      }
+    } else {
+      ++p;
+      while (p < src_.size()) {
+        size_t q = p + (src_[p] == '_' ? 1 : 0);
+        if (q >= src_.size() || !isDigit(src_[q])) break;
+        p = q + 1;
+      }
+    }
+    emit(Tok::Integer, pos_, src_.substr(pos_, p - pos_));
+    pos_ = p;
+    return true;
+  }
+
+  bool isNameChar(size_t p, size_t& next, bool start) const {
+    next = p;
+    char c = src_[p];
+    if (static_cast<unsigned char>(c) < 0x80) {
+      next = p + 1;
+      return isAsciiNameStart(c) || (!start && isDigit(c));
+    }
+    char32_t cp = unicode::decode(src_, next);
+    return unicode::isAlnum(cp);
+  }
+
+  bool lexName() {
+    size_t next;
+    if (!isNameChar(pos_, next, true)) return false;
+    size_t p = next;
+    while (p < src_.size() && isNameChar(p, next, false)) p = next;
+    emit(Tok::Name, pos_, src_.substr(pos_, p - pos_));
+    pos_ = p;
+    return true;
+  }
+
+  bool lexString() {
+    char quote = src_[pos_];
+    if (quote != '\'' && quote != '"') return false;
+    size_t p = pos_ + 1;
+    while (p < src_.size() && src_[p] != quote) p += src_[p] == '\\' ? 2 : 1;
+    if (p >= src_.size()) return false;
+    emit(Tok::String, pos_, src_.substr(pos_, p + 1 - pos_));
+    pos_ = p + 1;
+    return true;
+  }
+
+  bool lexOperator() {
+    struct Op {
+      std::string_view text;
+      Tok kind;
+    };
+    static constexpr Op kOps[] = {
+        {"**", Tok::Pow},     {"//", Tok::FloorDiv}, {"==", Tok::Eq},    {"!=", Tok::Ne},
+        {">=", Tok::Ge},      {"<=", Tok::Le},       {"+", Tok::Add},    {"-", Tok::Sub},
+        {"/", Tok::Div},      {"*", Tok::Mul},       {"%", Tok::Mod},    {"~", Tok::Tilde},
+        {"[", Tok::LBracket}, {"]", Tok::RBracket},  {"(", Tok::LParen}, {")", Tok::RParen},
+        {"{", Tok::LBrace},   {"}", Tok::RBrace},    {">", Tok::Gt},     {"<", Tok::Lt},
+        {"=", Tok::Assign},   {".", Tok::Dot},       {":", Tok::Colon},  {"|", Tok::Pipe},
+        {",", Tok::Comma},    {";", Tok::Semicolon},
+    };
+    for (const Op& op : kOps) {
+      if (!startsWith(pos_, op.text)) continue;
+      balanceBracket(op.text[0]);
+      emit(op.kind, pos_, src_.substr(pos_, op.text.size()));
+      pos_ += op.text.size();
+      return true;
+    }
+    return false;
+  }
+
+  void balanceBracket(char c) {
+    if (c == '{' || c == '(' || c == '[') {
+      balance_.push_back(c == '{' ? '}' : c == '(' ? ')' : ']');
+      return;
+    }
+    if (c != '}' && c != ')' && c != ']') return;
+    if (balance_.empty()) failAt(pos_, std::string("unexpected `") + c + "`");
+    char expected = balance_.back();
+    balance_.pop_back();
+    if (expected != c) {
+      failAt(pos_, std::string("unexpected `") + c + "`, expected `" + expected + "`");
+    }
+  }
+
+  std::string_view src_;
+  LexerOptions options_;
+  size_t pos_ = 0;
+  bool line_starting_ = true;
+  std::vector<char> balance_;
+  std::vector<Token> out_;
+};
+
+}  // namespace
+
+std::string normalizeSource(std::string_view source) {
+  std::string out;
+  out.reserve(source.size());
+  for (size_t i = 0; i < source.size(); ++i) {
+    if (source[i] == '\r') {
+      out.push_back('\n');
+      if (i + 1 < source.size() && source[i + 1] == '\n') ++i;
+    } else {
+      out.push_back(source[i]);
+    }
+  }
+  if (!out.empty() && out.back() == '\n') out.pop_back();
+  return out;
+}
+
+std::vector<Token> tokenize(std::string_view source, const LexerOptions& options) {
+  return Lexer(source, options).run();
+}
+
+std::string_view describe(Tok kind) {
+  switch (kind) {
+    case Tok::Data:
+      return "template data";
+    case Tok::VariableBegin:
+      return "{{";
+    case Tok::VariableEnd:
+      return "}}";
+    case Tok::BlockBegin:
+      return "{%";
+    case Tok::BlockEnd:
+      return "%}";
+    case Tok::Name:
+      return "name";
+    case Tok::String:
+      return "string";
+    case Tok::Integer:
+      return "integer";
+    case Tok::Float:
+      return "float";
+    case Tok::Eof:
+      return "end of template";
+    case Tok::Add:
+      return "+";
+    case Tok::Sub:
+      return "-";
+    case Tok::Mul:
+      return "*";
+    case Tok::Div:
+      return "/";
+    case Tok::FloorDiv:
+      return "//";
+    case Tok::Mod:
+      return "%";
+    case Tok::Pow:
+      return "**";
+    case Tok::Tilde:
+      return "~";
+    case Tok::LBracket:
+      return "[";
+    case Tok::RBracket:
+      return "]";
+    case Tok::LParen:
+      return "(";
+    case Tok::RParen:
+      return ")";
+    case Tok::LBrace:
+      return "{";
+    case Tok::RBrace:
+      return "}";
+    case Tok::Eq:
+      return "==";
+    case Tok::Ne:
+      return "!=";
+    case Tok::Gt:
+      return ">";
+    case Tok::Ge:
+      return ">=";
+    case Tok::Lt:
+      return "<";
+    case Tok::Le:
+      return "<=";
+    case Tok::Assign:
+      return "=";
+    case Tok::Dot:
+      return ".";
+    case Tok::Colon:
+      return ":";
+    case Tok::Pipe:
+      return "|";
+    case Tok::Comma:
+      return ",";
+    case Tok::Semicolon:
+      return ";";
+  }
+  return "token";
+}
+
+}  // namespace smachac::tmpl

@@ -1,0 +1,257 @@
+// `for` loops: lazy iteration (a list appended to during the loop is seen, a dict changed
+// during the loop is an error, like Python), loop filters, `else`, and the `loop` object with
+// Jinja2's LoopContext attributes (index, first, last, length, cycle, changed, ...).
+#include "backends/tmpl/error.h"
+#include "backends/tmpl/renderer/render.h"
+#include "backends/tmpl/values/value_ops.h"
+#include "backends/tmpl/values/value_print.h"
+#include "ir/support/unicode.h"
+
+namespace smachac::tmpl {
+namespace {
+
+// Yields the items of an iterable value one at a time.
+class Source {
+ public:
+  explicit Source(Value v) : value_(std::move(v)) {
+    switch (value_.kind()) {
+      case Kind::Undefined:
+        done_ = true;
+        break;
+      case Kind::List:
+      case Kind::Tuple:
+        break;
+      case Kind::Dict:
+        shape_ = value_.dict().shape();
+        break;
+      default:
+        snapshot_ = iterate(value_);
+    }
+  }
+
+  bool next(Value& out) {
+    if (done_) return false;
+    switch (value_.kind()) {
+      case Kind::List:
+      case Kind::Tuple:
+        return take(value_.list().items(), out);
+      case Kind::Dict:
+        if (value_.dict().shape() != shape_) fail("dictionary changed size during iteration");
+        if (index_ >= value_.dict().size()) return false;
+        out = value_.dict().entries()[index_++].first;
+        return true;
+      default:
+        return take(snapshot_, out);
+    }
+  }
+
+ private:
+  bool take(const std::vector<Value>& items, Value& out) {
+    if (index_ >= items.size()) return false;
+    out = items[index_++];
+    return true;
+  }
+
+  Value value_;
+  std::vector<Value> snapshot_;
+  size_t index_ = 0;
+  uint64_t shape_ = 0;
+  bool done_ = false;
+};
+
+// The filtered item stream with look-ahead, which `loop.last`/`length` need.
+class Feed {
+ public:
+  Feed(Exec& ex, Site& site, const ForStmt& node, Value iterable)
+      : ex_(ex), site_(site), node_(node), source_(std::move(iterable)) {}
+
+  bool next(Value& out) {
+    if (head_ < buffer_.size()) {
+      out = std::move(buffer_[head_++]);
+      return true;
+    }
+    return fetch(out);
+  }
+
+  bool peek(Value& out) {
+    if (head_ == buffer_.size()) {
+      Value v;
+      if (!fetch(v)) return false;
+      buffer_.erase(buffer_.begin(), buffer_.begin() + static_cast<std::ptrdiff_t>(head_));
+      head_ = 0;
+      buffer_.push_back(std::move(v));
+    }
+    out = buffer_[head_];
+    return true;
+  }
+
+  size_t remaining() {
+    Value v;
+    while (fetch(v)) buffer_.push_back(std::move(v));
+    return buffer_.size() - head_;
+  }
+
+ private:
+  bool fetch(Value& out) {
+    while (source_.next(out)) {
+      if (!node_.filter || accepts(out)) return true;
+    }
+    return false;
+  }
+
+  bool accepts(const Value& item) {
+    if (!test_frame_)
+      test_frame_ = Frame::make(site_.frame, &site_.frame->context(), node_.test_frame.num_slots);
+    initFrame(*test_frame_, node_.test_frame, ex_.registry);
+    bindTarget(*test_frame_, node_.target, item, node_.test_target_slots.data());
+    Site test_site = site_.inner(test_frame_.get());
+    return truthy(eval(ex_, test_site, node_.filter));
+  }
+
+  Exec& ex_;
+  Site& site_;
+  const ForStmt& node_;
+  Source source_;
+  std::vector<Value> buffer_;  // items fetched ahead; the first `head_` are consumed
+  size_t head_ = 0;
+  Ref<Frame> test_frame_;
+};
+
+class LoopObject final : public Object {
+ public:
+  explicit LoopObject(Feed* feed) : feed_(feed) {}
+
+  void advance(const Value& item) {
+    ++index0_;
+    previous_ = current_;
+    current_ = item;
+  }
+  void finish() {
+    length_ = index0_ + 1;
+    feed_ = nullptr;
+  }
+
+  std::string_view typeName() const override { return "LoopContext"; }
+  void repr(std::string& out) const override {
+    out += "<LoopContext " + std::to_string(index0_ + 1) + "/" + std::to_string(length()) + ">";
+  }
+  bool getAttr(std::string_view name, Value& out) const override;
+  bool iterate(std::vector<Value>&) const override { return false; }
+  Value cycle(const CallArgs& args) const {
+    if (args.positional.empty()) fail("no items for cycling given");
+    return args.positional[static_cast<size_t>(index0_) % args.positional.size()];
+  }
+  Value changed(const CallArgs& args) {
+    Value current = Value::newTuple({args.positional.begin(), args.positional.end()});
+    if (has_changed_ && equals(last_changed_, current)) return Value::boolean(false);
+    has_changed_ = true;
+    last_changed_ = current;
+    return Value::boolean(true);
+  }
+
+ private:
+  int64_t length() const {
+    if (length_ < 0 && feed_) length_ = index0_ + 1 + static_cast<int64_t>(feed_->remaining());
+    return length_ < 0 ? index0_ + 1 : length_;
+  }
+  bool hasNext(Value* out) const {
+    if (!feed_) return false;
+    Value v;
+    if (!feed_->peek(v)) return false;
+    if (out) *out = v;
+    return true;
+  }
+
+  Feed* feed_;
+  int64_t index0_ = -1;
+  mutable int64_t length_ = -1;
+  Value current_;
+  Value previous_;  // unset until the second item (as before: the first item has none)
+  bool has_changed_ = false;
+  Value last_changed_;
+};
+
+class LoopMethod final : public Object {
+ public:
+  LoopMethod(Ref<LoopObject> loop, bool cycle) : loop_(std::move(loop)), cycle_(cycle) {}
+  std::string_view typeName() const override { return "method"; }
+  bool isCallable() const override { return true; }
+  Value call(Exec&, const CallArgs& args) const override {
+    return cycle_ ? loop_->cycle(args) : loop_->changed(args);
+  }
+
+ private:
+  Ref<LoopObject> loop_;
+  bool cycle_;
+};
+
+bool LoopObject::getAttr(std::string_view name, Value& out) const {
+  int64_t index = index0_ + 1;
+  if (name == "index")
+    out = Value::integer(index);
+  else if (name == "index0")
+    out = Value::integer(index0_);
+  else if (name == "first")
+    out = Value::boolean(index0_ == 0);
+  else if (name == "last")
+    out = Value::boolean(!hasNext(nullptr));
+  else if (name == "length")
+    out = Value::integer(length());
+  else if (name == "revindex")
+    out = Value::integer(length() - index0_);
+  else if (name == "revindex0")
+    out = Value::integer(length() - index);
+  else if (name == "depth")
+    out = Value::integer(1);
+  else if (name == "depth0")
+    out = Value::integer(0);
+  else if (name == "previtem")
+    out = previous_;
+  else if (name == "nextitem") {
+    if (!hasNext(&out)) out = Value::undefinedHint("there is no next item");
+  } else if (name == "cycle" || name == "changed") {
+    out = Value::object(new LoopMethod(const_cast<LoopObject*>(this), name == "cycle"));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void execFor(Exec& ex, Site& site, const ForStmt& node) {
+  Value iterable = eval(ex, site, node.iter);
+  if (!iterable.isObject() && !isIterable(iterable)) {
+    fail("`" + std::string(typeName(iterable)) + "` object is not iterable");
+  }
+  Feed feed(ex, site, node, iterable);
+  FrameHolder frame(ex, site.frame, &site.frame->context(), node.loop_frame);
+  Ref<LoopObject> loop = node.loop_slot >= 0 ? new LoopObject(&feed) : nullptr;
+  struct Finisher {
+    LoopObject* loop;
+    ~Finisher() {
+      if (loop) loop->finish();
+    }
+  } finisher{loop.get()};
+  Site inner = site.inner(frame.get());
+  bool iterated = false;
+  Value item;
+  while (feed.next(item)) {
+    ex.step();
+    iterated = true;
+    initFrame(*frame, node.loop_frame, ex.registry);
+    bindTarget(*frame, node.target, item, nullptr);
+    if (loop) {
+      loop->advance(item);
+      frame->local(static_cast<uint16_t>(node.loop_slot)) = Value::object(loop.get());
+    }
+    execBody(ex, inner, node.body);
+  }
+  if (iterated || node.orelse.empty()) return;
+  FrameHolder else_frame(ex, site.frame, &site.frame->context(), node.else_frame);
+  initFrame(*else_frame, node.else_frame, ex.registry);
+  Site else_site = site.inner(else_frame.get());
+  execBody(ex, else_site, node.orelse);
+}
+
+}  // namespace smachac::tmpl

@@ -33,6 +33,13 @@ constexpr Target kTargets[] = {
 
 std::span<const Target> targets() { return kTargets; }
 
+std::vector<std::string> optionalBlocksSkipped(const EmitOptions& options) {
+  std::vector<std::string> skip;
+  if (!options.comments) skip.insert(skip.end(), {"upper_comments", "lower_comments"});
+  if (!options.introspection) skip.insert(skip.end(), {"introspection_server", "spin"});
+  return skip;
+}
+
 const Target* findTarget(std::string_view name) {
   for (const Target& t : kTargets) {
     if (t.name == name) return &t;

@@ -46,6 +46,10 @@ struct EmitContext {
 
 using EmitFn = std::optional<std::vector<OutputFile>> (*)(const ir::Module&, EmitContext&);
 
+/// The template blocks a SMACH-shaped target (smach, cpp) leaves out: the comment blocks
+/// without -c, the introspection server and its spin without -i.
+std::vector<std::string> optionalBlocksSkipped(const EmitOptions& options);
+
 struct Target {
   std::string_view name;
   std::string_view description;

@@ -3,10 +3,9 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "frontend/yaml_loader.h"
+#include "ir/support/file_text.h"
 #include "lsp/uri.h"
 
 namespace smachac::lsp {
@@ -42,11 +41,7 @@ void collectYamlFiles(const fs::path& root, std::vector<std::string>& out, size_
 std::optional<std::string> readText(const std::string& path) {
   std::error_code ec;
   if (fs::file_size(path, ec) > frontend::kMaxScriptBytes || ec) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return readFileText(path);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "backends/meta/template_help.h"
 #include "backends/meta/template_meta.h"
+#include "ir/support/file_text.h"
 #include "ir/support/version.h"
 
 namespace smachac::lsp {
@@ -17,10 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 bool holds(const fs::path& path, std::string_view content) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return text == content;
+  std::optional<std::string> text = readFileText(path.string());
+  return text && *text == content;
 }
 
 bool writeFile(const fs::path& path, std::string_view content) {

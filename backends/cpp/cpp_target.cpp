@@ -9,16 +9,6 @@
 #include "templates/builtin_templates.h"
 
 namespace smachac::backends::cpp {
-namespace {
-
-std::vector<std::string> skipBlocks(const EmitOptions& options) {
-  std::vector<std::string> skip;
-  if (!options.comments) skip.insert(skip.end(), {"upper_comments", "lower_comments"});
-  if (!options.introspection) skip.insert(skip.end(), {"introspection_server", "spin"});
-  return skip;
-}
-
-}  // namespace
 
 generator::TemplatePath templatePath(const std::vector<std::string>& template_dirs) {
   return {template_dirs, {"cpp/"}, templates::builtinTemplates()};
@@ -32,7 +22,8 @@ std::optional<std::vector<OutputFile>> emitCpp(const ir::Module& module, EmitCon
   const std::optional<LibraryNames>& library = context.options.library;
   env->addGlobal("cpp_library", libraryGlobal(library));
   generator::GeneratorContext generator_context{
-      *env, converter, context.sources, context.diags, path, skipBlocks(context.options)};
+      *env,          converter, context.sources,
+      context.diags, path,      optionalBlocksSkipped(context.options)};
   std::optional<std::string> code = generator::generate(module, generator_context);
   if (!code) return std::nullopt;
   if (!library) return std::vector<OutputFile>{{"", std::move(*code)}};

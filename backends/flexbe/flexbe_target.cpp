@@ -1,13 +1,11 @@
 // The FlexBE target: environment, generator, file split, manual sections.
 #include "backends/flexbe/flexbe_target.h"
 
-#include <fstream>
-#include <sstream>
-
 #include "backends/flexbe/behavior_writer.h"
 #include "backends/flexbe/manual_sections.h"
 #include "backends/generator/generator.h"
 #include "backends/smach/python_extensions.h"
+#include "ir/support/file_text.h"
 #include "templates/builtin_templates.h"
 
 namespace smachac::backends::flexbe {
@@ -21,20 +19,12 @@ std::vector<std::string> skipBlocks(const EmitOptions& options) {
   return skip;
 }
 
-std::optional<std::string> readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 /// Keeps the manual sections of the files that already exist in the output directory.
 bool keepManualSections(std::vector<OutputFile>& files, const EmitContext& context) {
   const std::string& dir = context.options.output;
   if (dir.empty() || dir == "-") return true;
   for (OutputFile& file : files) {
-    std::optional<std::string> existing = readFile(dir + "/" + file.name);
+    std::optional<std::string> existing = readFileText(dir + "/" + file.name);
     if (!existing) continue;
     std::optional<std::string> merged = flexbe::keepManualSections(file.content, *existing);
     if (!merged) {

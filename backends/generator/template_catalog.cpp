@@ -4,11 +4,10 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "backends/tmpl/loader.h"
+#include "ir/support/file_text.h"
 #include "ir/support/suggest.h"
 
 namespace smachac::generator {
@@ -64,16 +63,6 @@ std::vector<std::string> templateNames(const TemplatePath& path) {
 
 namespace {
 
-std::optional<std::string> readFile(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  if (!in) return std::nullopt;
-  return out.str();
-}
-
 bool plainName(std::string_view name) {
   if (name.empty() || name.find('\\') != std::string_view::npos) return false;
   size_t start = 0;
@@ -93,7 +82,7 @@ std::optional<std::string> readTemplateSource(const TemplatePath& path, std::str
   for (const std::string& dir : path.dirs) {
     std::error_code ec;
     fs::path file = fs::path(dir) / name;
-    if (fs::is_regular_file(file, ec)) return readFile(file);
+    if (fs::is_regular_file(file, ec)) return readFileText(file.string());
   }
   for (const std::string& set : path.builtin_sets) {
     std::string full = withSlash(set) + std::string(name);
@@ -154,7 +143,7 @@ std::optional<std::string> TemplateFiles::text(const std::string& origin) const 
     }
     return std::nullopt;
   }
-  return readFile(origin);
+  return readFileText(origin);
 }
 
 }  // namespace smachac::generator

@@ -6,16 +6,6 @@
 #include "templates/builtin_templates.h"
 
 namespace smachac::backends::smach {
-namespace {
-
-std::vector<std::string> skipBlocks(const EmitOptions& options) {
-  std::vector<std::string> skip;
-  if (!options.comments) skip.insert(skip.end(), {"upper_comments", "lower_comments"});
-  if (!options.introspection) skip.insert(skip.end(), {"introspection_server", "spin"});
-  return skip;
-}
-
-}  // namespace
 
 generator::TemplatePath templatePath(const std::vector<std::string>& template_dirs) {
   return {template_dirs, {"smach/", "smach_ros/"}, templates::builtinTemplates()};
@@ -35,7 +25,8 @@ std::optional<std::vector<OutputFile>> emitSmach(const ir::Module& module, EmitC
   std::unique_ptr<tmpl::Environment> env =
       makeEnvironment(path, converter, context.options.comments);
   generator::GeneratorContext generator_context{
-      *env, converter, context.sources, context.diags, path, skipBlocks(context.options)};
+      *env,          converter, context.sources,
+      context.diags, path,      optionalBlocksSkipped(context.options)};
   std::optional<std::string> code = generator::generate(module, generator_context);
   if (!code) return std::nullopt;
   return std::vector<OutputFile>{{"", std::move(*code)}};

@@ -3,10 +3,9 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "backends/tmpl/error.h"
+#include "ir/support/file_text.h"
 
 namespace smachac::tmpl {
 namespace fs = std::filesystem;
@@ -51,11 +50,9 @@ std::optional<TemplateSource> Loader::load(std::string_view raw_name) const {
     fs::path path = fs::path(dir) / *name;
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) continue;
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) fail("cannot read template file `" + path.string() + "`");
-    return TemplateSource{path.lexically_normal().string(), text.str()};
+    std::optional<std::string> text = readFileText(path.string());
+    if (!text) fail("cannot read template file `" + path.string() + "`");
+    return TemplateSource{path.lexically_normal().string(), std::move(*text)};
   }
   for (const std::string& set : builtin_sets_) {
     if (auto it = builtins_.find(set + *name); it != builtins_.end()) {

@@ -10,10 +10,9 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
+#include "ir/support/file_text.h"
 #include "refactor/extract.h"
 #include "tools/smachac/output.h"
 #include "tools/smachac/script_tool.h"
@@ -64,12 +63,8 @@ std::string subScriptName(const ExtractOptions& o) {
 }
 
 std::optional<std::string> readExisting(const std::string& path) {
-  std::error_code ec;
-  if (path == "-" || !fs::is_regular_file(path, ec)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return std::move(text).str();
+  if (path == "-") return std::nullopt;
+  return readFileText(path);
 }
 
 /// Writes both files, or neither: the first is restored when the second fails.

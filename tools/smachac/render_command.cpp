@@ -8,15 +8,14 @@
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
-#include <sstream>
 
 #include "backends/generator/template_values.h"
 #include "backends/smach/python_extensions.h"
 #include "backends/tmpl/environment.h"
 #include "backends/tmpl/values/value_convert.h"
+#include "ir/support/file_text.h"
 #include "templates/builtin_templates.h"
 #include "tools/smachac/commands.h"
 #include "tools/smachac/output.h"
@@ -63,14 +62,6 @@ std::optional<int> parse(RenderOptions& o, const Args& args) {
   return parseArgs(app, args);
 }
 
-std::optional<std::string> readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 tmpl::Value loadContext(const std::string& path, const std::string& text) {
   std::string ext = fs::path(path).extension().string();
   size_t first = text.find_first_not_of(" \t\r\n");
@@ -85,7 +76,7 @@ tmpl::Value loadContext(const std::string& path, const std::string& text) {
 int render(RenderOptions& o) {
   tmpl::Value context = tmpl::Value::newDict();
   if (!o.context_path.empty()) {
-    std::optional<std::string> text = readFile(o.context_path);
+    std::optional<std::string> text = readFileText(o.context_path);
     if (!text) return usageError("cannot read `" + o.context_path + "`");
     try {
       context = loadContext(o.context_path, *text);

@@ -10,6 +10,32 @@ bool isAlnum(char c) {
 
 bool isNonAscii(char c) { return static_cast<unsigned char>(c) >= 0x80; }
 
+/// Bytes checked at once by hasOnlySimpleBytes: the branch-free loop over a chunk vectorises.
+constexpr size_t kSimpleChunk = 64;
+
+bool isPrintableOrNewline(unsigned char c) { return (c >= 0x20 && c < 0x7F) || c == '\n'; }
+
+/// True when the kSimpleChunk bytes at `chunk` are all printable ASCII or line feeds (no early
+/// exit, a fixed count: the compiler vectorises it).
+bool isPlainAsciiChunk(const char* chunk) {
+  unsigned char odd = 0;
+  for (size_t i = 0; i < kSimpleChunk; ++i) {
+    auto c = static_cast<unsigned char>(chunk[i]);
+    odd |= static_cast<unsigned char>(static_cast<unsigned char>(c - 0x20) > 0x5E) &
+           static_cast<unsigned char>(c != '\n');
+  }
+  return odd == 0;
+}
+
+/// Whether the odd byte at `i` may stay: a non-ASCII byte that does not start a byte order
+/// mark, NEL or a line or paragraph separator.
+bool simpleAt(std::string_view text, size_t i) {
+  if (static_cast<unsigned char>(text[i]) < 0x80) return false;  // control bytes, DEL
+  std::string_view rest = text.substr(i);
+  return !(rest.starts_with("\xEF\xBB\xBF") || rest.starts_with("\xC2\x85") ||
+           rest.starts_with("\xE2\x80\xA8") || rest.starts_with("\xE2\x80\xA9"));
+}
+
 /// `---` or `...` followed by a blank at the start of a line: a document marker.
 bool atDocumentMarker(const YamlCursor& c) {
   if (c.column() != 0) return false;
@@ -73,14 +99,44 @@ bool scanSingleQuoted(YamlCursor& c, YamlScalar& out) {
   return true;
 }
 
-/// Where a block plain scalar ends: `: `, ` #` or the line end.
-bool endsBlockPlain(const YamlCursor& c) {
-  char ch = c.peek();
-  if (ch == ':') {
-    char next = c.peek(1);
-    return next == ' ' || next == '\n' || next == '\0';
+/// Moves past a block plain scalar, up to `: `, ` #` or the line end; returns one past its
+/// last non-space byte.
+size_t skipBlockPlain(YamlCursor& c) {
+  std::string_view t = c.text;
+  size_t i = c.pos;
+  size_t end = c.pos;
+  for (; i < t.size() && t[i] != '\n'; ++i) {
+    char next = i + 1 < t.size() ? t[i + 1] : '\0';
+    if (t[i] == ' ') {
+      if (next == '#') break;
+      continue;
+    }
+    if (t[i] == ':' && (next == ' ' || next == '\n' || next == '\0')) break;
+    end = i + 1;
   }
-  return ch == '\n' || ch == '\0' || (ch == ' ' && c.peek(1) == '#');
+  c.pos = i;
+  return end;
+}
+
+bool endsFlowPlain(char ch, char next) {
+  return ch == ',' || ch == '[' || ch == ']' || ch == '{' || ch == '}' ||
+         (ch == ':' && next == ' ');
+}
+
+/// Moves past a flow plain scalar, up to `,[]{}` or `: `; false at anything the reader leaves
+/// to yaml-cpp (`:`, `#`, `?`, a quote, the line end). `end` is one past its last non-space.
+bool skipFlowPlain(YamlCursor& c, size_t& end) {
+  std::string_view t = c.text;
+  for (size_t i = c.pos; i < t.size(); ++i) {
+    char ch = t[i];
+    if (endsFlowPlain(ch, i + 1 < t.size() ? t[i + 1] : '\0')) {
+      c.pos = i;
+      return true;
+    }
+    if (ch == ':' || ch == '#' || ch == '?' || ch == '"' || ch == '\'' || ch == '\n') return false;
+    if (ch != ' ') end = i + 1;
+  }
+  return false;
 }
 
 }  // namespace
@@ -94,16 +150,15 @@ void YamlCursor::nextLine() {
 }
 
 bool hasOnlySimpleBytes(std::string_view text) {
-  for (size_t i = 0; i < text.size(); ++i) {
-    auto c = static_cast<unsigned char>(text[i]);
-    if (c >= 0x20 && c < 0x7F) continue;
-    if (c == '\n') continue;
-    if (c < 0x80) return false;  // tab, carriage return, other control bytes, DEL
-    std::string_view rest = text.substr(i);
-    if (rest.starts_with("\xEF\xBB\xBF") || rest.starts_with("\xC2\x85") ||
-        rest.starts_with("\xE2\x80\xA8") || rest.starts_with("\xE2\x80\xA9")) {
-      return false;  // byte order mark, NEL, line and paragraph separators
+  for (size_t i = 0; i < text.size();) {
+    if (text.size() - i >= kSimpleChunk && isPlainAsciiChunk(text.data() + i)) {
+      i += kSimpleChunk;
+      continue;
     }
+    if (!isPrintableOrNewline(static_cast<unsigned char>(text[i])) && !simpleAt(text, i)) {
+      return false;
+    }
+    ++i;
   }
   return true;
 }
@@ -120,20 +175,11 @@ bool scanPlain(YamlCursor& c, YamlContext context, YamlScalar& out) {
   out.mark = c.mark();
   out.quoted = false;
   size_t start = c.pos;
-  size_t end = c.pos;  // one past the last non-space byte
-  while (true) {
-    if (context == YamlContext::Block) {
-      if (endsBlockPlain(c)) break;
-    } else {
-      char ch = c.peek();
-      if (ch == ',' || ch == '[' || ch == ']' || ch == '{' || ch == '}') break;
-      if (ch == ':' && c.peek(1) == ' ') break;
-      if (ch == ':' || ch == '#' || ch == '?' || ch == '"' || ch == '\'' || c.atLineEnd()) {
-        return false;
-      }
-    }
-    if (c.text[c.pos] != ' ') end = c.pos + 1;
-    ++c.pos;
+  size_t end = c.pos;
+  if (context == YamlContext::Block) {
+    end = skipBlockPlain(c);
+  } else if (!skipFlowPlain(c, end)) {
+    return false;
   }
   out.text = c.text.substr(start, end - start);
   return true;

@@ -3,8 +3,6 @@
 
 #include <fmt/core.h>
 
-#include <functional>
-
 #include "ir/python_text.h"
 
 namespace smachac::frontend {
@@ -23,7 +21,8 @@ std::string field(std::string_view key, std::string_view what) {
 /// readName's usual case, a non-empty string, without formatting the message it might need.
 bool readStringName(const Value& v, ir::Name& out) {
   if (!v.isString() || v.asString().empty()) return false;
-  out = {v.asString(), v.loc};
+  out.text = v.asString();
+  out.loc = v.loc;
   return true;
 }
 
@@ -34,6 +33,7 @@ void readNameList(const Value& v, std::string_view key, std::string_view what,
                                          describeValue(v));
     return;
   }
+  out.reserve(out.size() + v.asList().size());
   for (const Value& item : v.asList()) {
     ir::Name name;
     if (readStringName(item, name) || readName(item, field(key, what) + " entries", name, diags)) {
@@ -42,10 +42,12 @@ void readNameList(const Value& v, std::string_view key, std::string_view what,
   }
 }
 
-/// Calls `each(key name, value)` for a mapping, or reports the key as not a mapping.
+/// Calls `each(entry)` for each entry of a mapping, or reports the key as not a mapping. A
+/// template rather than a std::function: the callers' lambdas would not fit its small buffer
+/// and cost an allocation per call.
+template <typename Each>
 bool forEachEntry(const Value& v, std::string_view key, std::string_view what,
-                  std::string_view expected, const std::function<void(const ir::MapEntry&)>& each,
-                  DiagnosticEmitter& diags) {
+                  std::string_view expected, const Each& each, DiagnosticEmitter& diags) {
   if (!v.isMap()) {
     diags.emit<DiagKind::InvalidKeyType>(v.loc, field(key, what), expected, describeValue(v));
     return false;
@@ -58,13 +60,15 @@ ir::Name keyName(const ir::MapEntry& entry) { return {entry.key, entry.key_loc};
 
 void readTransitions(const Value& v, std::string_view what, ir::State& state,
                      DiagnosticEmitter& diags) {
+  if (v.isMap()) state.transitions.reserve(state.transitions.size() + v.asMap().size());
   forEachEntry(
       v, "transitions", what, "a mapping from outcome to target",
       [&](const ir::MapEntry& e) {
         ir::Name target;
         if (readStringName(e.value, target) ||
             readName(e.value, field("transitions", what) + " targets", target, diags)) {
-          state.transitions.push_back({keyName(e), target, ir::TargetKind::Unresolved, {}});
+          state.transitions.push_back(
+              {keyName(e), std::move(target), ir::TargetKind::Unresolved, {}});
         }
       },
       diags);
@@ -125,7 +129,7 @@ bool readCoreKey(const ir::MapEntry& e, std::string_view what, ir::State& state,
   if (key == "template") {
     ir::Name name;
     if (readStringName(v, name) || readName(v, field(key, what), name, diags)) {
-      state.template_name = name;
+      state.template_name = std::move(name);
     }
   } else if (key == "outcomes") {
     readNameList(v, key, what, state.outcomes, diags);

@@ -30,6 +30,16 @@ size_t countTextBytes(const ir::Value& v) {
   return n;
 }
 
+/// The items of a frame's buffer in a vector of their exact size; the buffer keeps its
+/// capacity for the next collection.
+template <typename Item>
+std::vector<Item> takeExact(std::vector<Item>& buffer) {
+  std::vector<Item> exact(std::make_move_iterator(buffer.begin()),
+                          std::make_move_iterator(buffer.end()));
+  buffer.clear();
+  return exact;
+}
+
 }  // namespace
 
 std::optional<ir::Value> YamlValueBuilder::take() {
@@ -52,8 +62,7 @@ void YamlValueBuilder::onAlias(YamlMark mark, uint64_t anchor) {
   }
   if (!charge(it->second.nodes, loc(mark))) return;
   if (!chargeAliasText(it->second.bytes, loc(mark))) return;
-  ir::Value copy = it->second.value;
-  finish(std::move(copy), 0, false, /*counted=*/true);
+  finish(ir::Value(it->second.value), 0, false, /*counted=*/true);
 }
 
 void YamlValueBuilder::onScalar(YamlMark mark, std::string_view tag, uint64_t anchor,
@@ -89,19 +98,9 @@ void YamlValueBuilder::onMapStart(YamlMark mark, uint64_t anchor) { open(true, l
 void YamlValueBuilder::onCollectionEnd() {
   if (aborted_ || depth_ == 0) return;
   Frame& frame = stack_[--depth_];
-  ir::Value v;
-  if (frame.is_map) {
-    v = ir::Value::map(ir::Map(std::make_move_iterator(frame.entries.begin()),
-                               std::make_move_iterator(frame.entries.end())),
-                       frame.loc);
-    frame.entries.clear();
-  } else {
-    v = ir::Value::list(ir::List(std::make_move_iterator(frame.items.begin()),
-                                 std::make_move_iterator(frame.items.end())),
-                        frame.loc);
-    frame.items.clear();
-  }
-  finish(std::move(v), frame.anchor, false);
+  finish(frame.is_map ? ir::Value::map(takeExact(frame.entries), frame.loc)
+                      : ir::Value::list(takeExact(frame.items), frame.loc),
+         frame.anchor, false);
 }
 
 SourceLoc YamlValueBuilder::loc(YamlMark mark, size_t length) const {
@@ -168,7 +167,7 @@ void YamlValueBuilder::open(bool is_map, SourceLoc where, uint64_t anchor) {
 }
 
 /// Hands a finished value to its parent (or makes it the root), remembering anchors.
-void YamlValueBuilder::finish(ir::Value v, uint64_t anchor, bool is_null, bool counted) {
+void YamlValueBuilder::finish(ir::Value&& v, uint64_t anchor, bool is_null, bool counted) {
   if (aborted_) return;
   if (!counted && !charge(1, v.loc)) return;
   if (anchor != 0) anchors_[anchor] = {v, countNodes(v), countTextBytes(v)};
@@ -205,7 +204,7 @@ void YamlValueBuilder::rejectKey(Frame& parent, const ir::Value& key) {
   report<DiagKind::NonScalarKey>(key.loc, key.isMap() ? "a mapping" : "a sequence");
 }
 
-void YamlValueBuilder::acceptValue(Frame& parent, ir::Value v, bool is_null) {
+void YamlValueBuilder::acceptValue(Frame& parent, ir::Value&& v, bool is_null) {
   parent.has_key = false;
   if (!parent.key_valid) return;
   if (is_null && v.loc.line != parent.key_loc.line) v.loc = parent.key_loc;
@@ -215,7 +214,7 @@ void YamlValueBuilder::acceptValue(Frame& parent, ir::Value v, bool is_null) {
     note<DiagNoteKind::FirstDefinedHere>(e.key_loc);
     return;
   }
-  parent.entries.push_back({std::move(parent.key), parent.key_loc, std::move(v)});
+  parent.entries.push_back(ir::MapEntry{std::move(parent.key), parent.key_loc, std::move(v)});
 }
 
 }  // namespace smachac::frontend

@@ -89,10 +89,10 @@ class YamlValueBuilder {
   bool charge(size_t nodes, SourceLoc where);
   bool chargeAliasText(size_t bytes, SourceLoc where);
   void open(bool is_map, SourceLoc where, uint64_t anchor);
-  void finish(ir::Value v, uint64_t anchor, bool is_null, bool counted = false);
+  void finish(ir::Value&& v, uint64_t anchor, bool is_null, bool counted = false);
   void acceptKey(Frame& parent, std::string_view text, SourceLoc key_loc);
   void rejectKey(Frame& parent, const ir::Value& key);
-  void acceptValue(Frame& parent, ir::Value v, bool is_null);
+  void acceptValue(Frame& parent, ir::Value&& v, bool is_null);
 
   uint32_t file_;
   DiagnosticEmitter& diags_;

@@ -1,8 +1,6 @@
 // Module: the state store and tree navigation.
 #include "ir/module.h"
 
-#include "ir/support/check.h"
-
 namespace smachac::ir {
 
 std::string_view targetKindName(TargetKind kind) {
@@ -27,16 +25,6 @@ const Argument* State::findArg(std::string_view key) const {
 StateId Module::addState(State state) {
   states_.push_back(std::move(state));
   return StateId(static_cast<uint32_t>(states_.size() - 1));
-}
-
-State& Module::state(StateId id) {
-  SMACHAC_CHECK(id.valid() && id.index < states_.size(), "dangling StateId");
-  return states_[id.index];
-}
-
-const State& Module::state(StateId id) const {
-  SMACHAC_CHECK(id.valid() && id.index < states_.size(), "dangling StateId");
-  return states_[id.index];
 }
 
 uint32_t Module::addBehaviorParam(StateId scope, std::string name) {
@@ -76,6 +64,7 @@ std::string Module::path(StateId id) const {
 std::vector<StateId> Module::preorder() const {
   std::vector<StateId> order;
   if (!root_.valid()) return order;
+  order.reserve(states_.size());
   std::vector<StateId> stack{root_};
   while (!stack.empty()) {
     StateId id = stack.back();

@@ -9,6 +9,7 @@
 
 #include "ir/ids.h"
 #include "ir/state.h"
+#include "ir/support/check.h"
 
 namespace smachac::ir {
 
@@ -22,8 +23,15 @@ struct BehaviorParam {
 class Module {
  public:
   StateId addState(State state);
-  State& state(StateId id);
-  const State& state(StateId id) const;
+  /// Inline: the passes look states up hundreds of times per state.
+  State& state(StateId id) {
+    SMACHAC_CHECK(id.valid() && id.index < states_.size(), "dangling StateId");
+    return states_[id.index];
+  }
+  const State& state(StateId id) const {
+    SMACHAC_CHECK(id.valid() && id.index < states_.size(), "dangling StateId");
+    return states_[id.index];
+  }
   size_t stateCount() const { return states_.size(); }
 
   StateId root() const { return root_; }

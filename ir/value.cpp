@@ -7,6 +7,10 @@
 
 namespace smachac::ir {
 
+// A big script's document tree is mostly values: keep them small (ExpressionPtr).
+static_assert(sizeof(Value) <= 64);
+static_assert(sizeof(MapEntry) <= 112);
+
 std::string_view valueKindName(ValueKind kind) {
   switch (kind) {
     case ValueKind::Null:
@@ -35,16 +39,17 @@ Value Value::integer(int64_t i, SourceLoc loc) { return Value{i, loc}; }
 Value Value::real(double d, SourceLoc loc) { return Value{d, loc}; }
 Value Value::string(std::string s, SourceLoc loc) { return Value{std::move(s), loc}; }
 Value Value::expression(std::string code, SourceLoc loc) {
-  return Value{Expression{std::move(code), nullptr}, loc};
+  return Value{std::make_shared<const Expression>(Expression{std::move(code), nullptr}), loc};
 }
 Value Value::portable(std::shared_ptr<const PortableExpr> expr, SourceLoc loc) {
   std::string text = expr->text;
-  return Value{Expression{std::move(text), std::move(expr)}, loc};
+  return Value{std::make_shared<const Expression>(Expression{std::move(text), std::move(expr)}),
+               loc};
 }
 
 const PortableExpr* Value::asPortable() const {
-  const Expression* e = std::get_if<Expression>(&data);
-  return e ? e->portable.get() : nullptr;
+  const ExpressionPtr* e = std::get_if<ExpressionPtr>(&data);
+  return e ? (*e)->portable.get() : nullptr;
 }
 
 Value Value::list(List items, SourceLoc loc) { return Value{std::move(items), loc}; }

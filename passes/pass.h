@@ -3,6 +3,7 @@
 // anything changed. The pass table (pipeline.cpp) is the only list of passes.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -12,11 +13,16 @@
 
 namespace smachac::passes {
 
+class UserdataScopeCache;
+
 /// What passes may look at besides the IR.
 struct PassContext {
   const SourceManager& sources;
   DiagnosticEmitter& diags;
   std::string target;  ///< the output target (smach, cpp, flexbe, ir, ...): identifier rules
+  /// Containers' userdata scopes, built once for the checks that share them
+  /// (analysis/userdata_scope.h: `userdataScope`); runPipeline clears it when the IR changes.
+  std::shared_ptr<UserdataScopeCache> userdata_scopes = nullptr;
 };
 
 using CheckFn = void (*)(const ir::Module&, PassContext&);

@@ -4,6 +4,7 @@
 
 #include "ir/support/check.h"
 #include "ir/verify.h"
+#include "passes/analysis/userdata_scope.h"
 #include "passes/optimize/transforms.h"
 #include "passes/validate/checks.h"
 
@@ -82,6 +83,7 @@ bool runPipeline(ir::Module& module, PassContext& context, const PipelineOptions
     if (pass.kind == PassKind::Check) {
       pass.check(module, context);
     } else if (options.optimize && !has_errors()) {
+      if (context.userdata_scopes) context.userdata_scopes->clear();
       pass.transform(module, context);
       std::optional<std::string> problem = ir::verify(module);
       SMACHAC_CHECK(!problem, problem ? problem->c_str() : "a transform broke the IR");
@@ -89,6 +91,7 @@ bool runPipeline(ir::Module& module, PassContext& context, const PipelineOptions
     bool print = options.print_ir_after == "all" || options.print_ir_after == pass.name;
     if (print && options.print_ir) options.print_ir(pass.name, module);
   }
+  if (context.userdata_scopes) context.userdata_scopes->clear();
   return !has_errors();
 }
 

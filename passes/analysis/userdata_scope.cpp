@@ -109,4 +109,27 @@ std::optional<std::pair<uint32_t, const KeyUse*>> UserdataScope::firstWriter(uin
   return std::make_pair(child, &writes_[index]);
 }
 
+const UserdataScope& UserdataScopeCache::get(const ir::Module& module, ir::StateId container) {
+  if (module_ != &module || state_count_ != module.stateCount()) {
+    clear();
+    module_ = &module;
+    state_count_ = module.stateCount();
+  }
+  std::unique_ptr<UserdataScope>& scope = scopes_[container.index];
+  if (!scope) scope = std::make_unique<UserdataScope>(module, container);
+  return *scope;
+}
+
+void UserdataScopeCache::clear() {
+  module_ = nullptr;
+  state_count_ = 0;
+  scopes_.clear();
+}
+
+const UserdataScope& userdataScope(PassContext& context, const ir::Module& module,
+                                   ir::StateId container) {
+  if (!context.userdata_scopes) context.userdata_scopes = std::make_shared<UserdataScopeCache>();
+  return context.userdata_scopes->get(module, container);
+}
+
 }  // namespace smachac::passes

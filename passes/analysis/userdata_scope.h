@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "ir/module.h"
+#include "passes/pass.h"
 
 namespace smachac::passes {
 
@@ -86,6 +88,24 @@ class UserdataScope {
   std::vector<KeyUse> writes_;
   std::vector<uint32_t> first_writer_;  ///< index into writes_, per key
 };
+
+/// The scopes of one module's containers, each built on first use. A scope points into the
+/// module: the cache empties itself when asked about another module (or one whose state count
+/// changed), and runPipeline clears it after a transform and at the end.
+class UserdataScopeCache {
+ public:
+  const UserdataScope& get(const ir::Module& module, ir::StateId container);
+  void clear();
+
+ private:
+  const ir::Module* module_ = nullptr;
+  size_t state_count_ = 0;
+  std::unordered_map<uint32_t, std::unique_ptr<UserdataScope>> scopes_;
+};
+
+/// `container`'s scope from `context`'s cache: the flow, usage and types checks share it.
+const UserdataScope& userdataScope(PassContext& context, const ir::Module& module,
+                                   ir::StateId container);
 
 /// The name `key` of `state` has in its parent: the remapped name, or `key` itself.
 const ir::Name& remappedName(const ir::State& state, const ir::Name& key);

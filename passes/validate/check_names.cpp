@@ -21,6 +21,7 @@
 
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "ir/support/identifiers.h"
 #include "passes/analysis/outcomes.h"
@@ -111,10 +112,13 @@ class NameChecker {
 
   /// A name that is used as it is; returns whether it is valid.
   bool checkKey(const ir::Name& key) {
+    if (valid_keys_.contains(key.text)) return true;
     std::optional<std::string> problem = identifierProblem(key.text, rules_);
     if (problem) {
       diags_.emit<DiagKind::InvalidIdentifier>(key.loc, "userdata key", key.text, rulesName(rules_),
                                                "it " + *problem);
+    } else {
+      valid_keys_.insert(key.text);
     }
     return !problem;
   }
@@ -173,6 +177,8 @@ class NameChecker {
   const ir::Module& module_;
   DiagnosticEmitter& diags_;
   IdentifierRules rules_;
+  /// Keys found valid: a script names the same few keys in most of its states.
+  std::unordered_set<std::string_view> valid_keys_;
 };
 
 }  // namespace

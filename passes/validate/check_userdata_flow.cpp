@@ -39,8 +39,11 @@ constexpr uint32_t kExit = UINT32_MAX;  ///< "child" index of the container's ou
 
 class FlowChecker {
  public:
-  FlowChecker(const ir::Module& module, ir::StateId id, DiagnosticEmitter& diags)
-      : module_(module), container_(module.state(id)), scope_(module, id), diags_(diags) {}
+  FlowChecker(const ir::Module& module, ir::StateId id, PassContext& context)
+      : module_(module),
+        container_(module.state(id)),
+        scope_(userdataScope(context, module, id)),
+        diags_(context.diags) {}
 
   /// Records this scope's keys in `defined`; takes the parent's from it.
   void linkScopes(ir::StateId id, DefinedKeys& defined) {
@@ -142,7 +145,7 @@ class FlowChecker {
 
   const ir::Module& module_;
   const ir::State& container_;
-  UserdataScope scope_;
+  const UserdataScope& scope_;
   DiagnosticEmitter& diags_;
   std::vector<std::string> names_;
   const NameSet* parent_keys_ = nullptr;
@@ -155,7 +158,7 @@ void checkUserdataFlow(const ir::Module& module, PassContext& context) {
   DefinedKeys defined;
   for (ir::StateId id : module.preorder()) {
     if (!ir::isContainer(module.state(id).kind)) continue;
-    FlowChecker checker(module, id, context.diags);
+    FlowChecker checker(module, id, context);
     checker.linkScopes(id, defined);
     checker.run(index);
   }

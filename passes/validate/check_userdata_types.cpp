@@ -44,10 +44,10 @@ bool compatible(const ir::Type& a, const ir::Type& b) {
   return true;
 }
 
-TypeTable literalTypes(const ir::Module& module, ir::StateId id) {
+TypeTable literalTypes(PassContext& context, const ir::Module& module, ir::StateId id) {
   const ir::State& container = module.state(id);
   TypeTable table;
-  UserdataScope scope(module, id);
+  const UserdataScope& scope = userdataScope(context, module, id);
   for (const LiteralDef& def : scope.literals()) {
     table[def.arg->key.text] = {ir::Type::ofValue(def.arg->value), def.arg->value.loc,
                                 container.name.text, def.arg->key.text, false};
@@ -57,13 +57,13 @@ TypeTable literalTypes(const ir::Module& module, ir::StateId id) {
 
 class TypeChecker {
  public:
-  TypeChecker(const ir::Module& module, DiagnosticEmitter& diags)
-      : module_(module), diags_(diags) {}
+  TypeChecker(const ir::Module& module, PassContext& context)
+      : module_(module), context_(context), diags_(context.diags) {}
 
   void run() {
     for (ir::StateId id : module_.preorder()) {
       if (!ir::isContainer(module_.state(id).kind)) continue;
-      TypeTable& table = tables_[id.index] = literalTypes(module_, id);
+      TypeTable& table = tables_[id.index] = literalTypes(context_, module_, id);
       ir::StateId parent = module_.state(id).parent;
       if (parent.valid()) checkInterface(module_.state(id), table, tables_[parent.index]);
     }
@@ -102,6 +102,7 @@ class TypeChecker {
   }
 
   const ir::Module& module_;
+  PassContext& context_;
   DiagnosticEmitter& diags_;
   std::unordered_map<uint32_t, TypeTable> tables_;
 };
@@ -109,7 +110,7 @@ class TypeChecker {
 }  // namespace
 
 void checkUserdataTypes(const ir::Module& module, PassContext& context) {
-  TypeChecker(module, context.diags).run();
+  TypeChecker(module, context).run();
 }
 
 }  // namespace smachac::passes

@@ -22,8 +22,11 @@ namespace {
 
 class UsageChecker {
  public:
-  UsageChecker(const ir::Module& module, ir::StateId id, DiagnosticEmitter& diags)
-      : module_(module), container_(module.state(id)), scope_(module, id), diags_(diags) {}
+  UsageChecker(const ir::Module& module, ir::StateId id, PassContext& context)
+      : module_(module),
+        container_(module.state(id)),
+        scope_(userdataScope(context, module, id)),
+        diags_(context.diags) {}
 
   void run() {
     reportOverwritten();
@@ -89,7 +92,7 @@ class UsageChecker {
 
   const ir::Module& module_;
   const ir::State& container_;
-  UserdataScope scope_;
+  const UserdataScope& scope_;
   DiagnosticEmitter& diags_;
 };
 
@@ -97,7 +100,7 @@ class UsageChecker {
 
 void checkUserdataUsage(const ir::Module& module, PassContext& context) {
   for (ir::StateId id : module.preorder()) {
-    if (ir::isContainer(module.state(id).kind)) UsageChecker(module, id, context.diags).run();
+    if (ir::isContainer(module.state(id).kind)) UsageChecker(module, id, context).run();
   }
 }
 

@@ -16,6 +16,8 @@ if ! clang-format --dry-run --Werror "${sources[@]}"; then
 fi
 echo "lint: ${#sources[@]} C++ files formatted as .clang-format says"
 root=$(pwd)
+# Sources of the tree only (not what BUILD generates); clang-tidy parses with clang, which does
+# not know some of GCC's warning flags in the compile database, hence -Wno-unknown-warning-option.
 tree="^${root}/(backends|bench|checker|editors|frontend|ir|lsp|passes|refactor|sim|stdlib|templates|tests|tools)/"
 if ! run-clang-tidy -clang-tidy-binary clang-tidy -p "$build" -j 2 -quiet \
     -header-filter "${tree}|/include_roots/" -extra-arg=-Wno-unknown-warning-option "$tree" \

@@ -73,20 +73,24 @@ def cpp_shorthands(source_dir):
     return dict(pairs)
 
 
-def cpp_root_keys(source_dir):
-    text = open(os.path.join(source_dir, "frontend/root_keys.cpp"), encoding="utf-8").read()
-    m = re.search(r"knownRootKeys\(\)\s*\{.*?kKeys\s*=\s*\{(.*?)\};", text, re.S)
+def keys_in_source(source_dir, path, function, pattern, key):
+    """The quoted keys (`key`, a regex with one group) inside what `pattern` matches in `path`:
+    the frontend's own table of the keys a function accepts."""
+    text = open(os.path.join(source_dir, path), encoding="utf-8").read()
+    m = re.search(pattern, text, re.S)
     if not m:
-        raise SystemExit("schema_test: knownRootKeys not found in frontend/root_keys.cpp")
-    return set(re.findall(r'"([^"]+)"', m.group(1)))
+        raise SystemExit("schema_test: %s not found in %s" % (function, path))
+    return set(re.findall(key, m.group(0)))
+
+
+def cpp_root_keys(source_dir):
+    return keys_in_source(source_dir, "frontend/root_keys.cpp", "knownRootKeys",
+                          r"knownRootKeys\(\)\s*\{.*?kKeys\s*=\s*\{.*?\};", r'"([^"]+)"')
 
 
 def cpp_state_keys(source_dir):
-    text = open(os.path.join(source_dir, "frontend/state_builder.cpp"), encoding="utf-8").read()
-    m = re.search(r"bool readCoreKey\(.*?\n\}\n", text, re.S)
-    if not m:
-        raise SystemExit("schema_test: readCoreKey not found in frontend/state_builder.cpp")
-    return set(re.findall(r'key == "([^"]+)"', m.group(0)))
+    return keys_in_source(source_dir, "frontend/state_builder.cpp", "readCoreKey",
+                          r"bool readCoreKey\(.*?\n\}\n", r'key == "([^"]+)"')
 
 
 def check_tables(schema, source_dir, failures):

@@ -1,6 +1,9 @@
 // The SMACHA-shaped template workload (see tmpl_workload.h).
 #include "bench/tmpl_workload.h"
 
+#include <algorithm>
+#include <string_view>
+
 namespace smachac::bench {
 namespace {
 
@@ -50,6 +53,26 @@ Value stateContext(int i, int count, const Value& definedHeaders) {
   });
 }
 
+namespace {
+
+// The code of each block, in the order of `blocks` (SMACHA's per-block buffers).
+using Buffers = std::vector<std::vector<std::string>>;
+
+// The non-empty codes of block `name`, each followed by a line break, stripped.
+std::string joinedCode(const std::vector<std::string>& blocks, const Buffers& buffers,
+                       std::string_view name) {
+  auto it = std::find(blocks.begin(), blocks.end(), name);
+  if (it == blocks.end()) return "";
+  std::string joined;
+  for (const std::string& code : buffers[static_cast<size_t>(it - blocks.begin())]) {
+    joined += code;
+    joined += '\n';
+  }
+  return strip(joined);
+}
+
+}  // namespace
+
 size_t runSmachaWorkload(tmpl::Environment& env, int count) {
   const std::string state = "WorkState.tpl.py";
   std::vector<std::string> blocks;
@@ -57,24 +80,21 @@ size_t runSmachaWorkload(tmpl::Environment& env, int count) {
     if (b != "meta") blocks.push_back(b);
   }
   Value definedHeaders = Value::newList();
-  std::map<std::string, std::vector<std::string>> buffers;
+  Buffers buffers(blocks.size());
   for (int i = 0; i < count; ++i) {
     Value ctx = stateContext(i, count, definedHeaders);
-    for (const std::string& block : blocks) {
-      std::string code = env.renderBlock(state, block, ctx);
-      if (!code.empty()) buffers[block].push_back(code);
+    for (size_t b = 0; b < blocks.size(); ++b) {
+      std::string code = env.renderBlock(state, blocks[b], ctx);
+      if (!code.empty()) buffers[b].push_back(std::move(code));
     }
   }
   Value base = dictOf({{"name", Value::string("top")}, {"outcomes", strings({"done", "failed"})}});
   for (const char* name : {"base_header", "imports", "defs", "class_defs", "cb_defs", "main_def",
                            "body", "footer", "execute", "base_footer"}) {
-    std::string joined;
-    for (const std::string& code : buffers[name]) joined += code + "\n";
-    base.dict().setString(name, Value::string(strip(joined)));
+    base.dict().setString(name, Value::string(joinedCode(blocks, buffers, name)));
   }
-  std::string header;
-  for (const std::string& code : buffers["header"]) header += code + "\n";
-  base.dict().setString("header", dictOf({{"sm_top", Value::string(strip(header))}}));
+  std::string header = joinedCode(blocks, buffers, "header");
+  base.dict().setString("header", dictOf({{"sm_top", Value::string(header)}}));
   return env.render("Base.tpl.py", base, tmpl::RenderOptions{{"meta"}}).size();
 }
 

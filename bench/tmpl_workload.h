@@ -4,7 +4,6 @@
 // same workload with python3-jinja2.
 #pragma once
 
-#include <map>
 #include <string>
 #include <vector>
 

@@ -13,9 +13,10 @@ namespace {
 
 using ir::Value;
 
+/// Views of the list's strings: every list value of every state is tried as a lookup.
 struct LookupKey {
-  std::string key;
-  std::optional<std::string> entry;
+  std::string_view key;
+  std::optional<std::string_view> entry;
 };
 
 /// Reads `[k]`, `[k, j]` or `[[x]]` (→ params, x). nullopt when the list is none of them.
@@ -24,11 +25,11 @@ std::optional<LookupKey> lookupKey(const Value& list) {
   const ir::List& items = list.asList();
   if (items.size() == 1 && items[0].isList() && items[0].asList().size() == 1 &&
       items[0].asList()[0].isString()) {
-    return LookupKey{"params", items[0].asList()[0].asString()};
+    return LookupKey{"params", std::string_view(items[0].asList()[0].asString())};
   }
   if (items.size() == 1 && items[0].isString()) return LookupKey{items[0].asString(), {}};
   if (items.size() == 2 && items[0].isString() && items[1].isString()) {
-    return LookupKey{items[0].asString(), items[1].asString()};
+    return LookupKey{items[0].asString(), std::string_view(items[1].asString())};
   }
   return std::nullopt;
 }

@@ -11,7 +11,8 @@
 // them marked as such (Value::behavior_param), so that FlexBE can refer to them. Sub-scripts
 // are included with the caller's overrides; transitions are resolved to siblings or container
 // outcomes. Every error is reported (the walk goes on after one); the module is returned only
-// when there were none.
+// when there were none. The main script's states are lowered while the rest is being read
+// (FrontendOptions::stream_states): the module and diagnostics are those of reading first.
 #pragma once
 
 #include <optional>
@@ -39,6 +40,10 @@ struct FrontendOptions {
   /// as it got (states whose keys failed are kept as written or left out). It is for
   /// navigation only: the passes never see a module with frontend errors.
   bool keep_module_on_error = false;
+  /// Lower the states of the root's `states` list while the rest of the script is being read
+  /// (the same module and diagnostics, without the whole YAML tree in memory at once); off:
+  /// read everything, then lower (the reference the streamed way is tested against).
+  bool stream_states = true;
 };
 
 std::optional<ir::Module> lowerScript(const std::string& path, const FrontendOptions& options,

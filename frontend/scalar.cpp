@@ -84,6 +84,14 @@ std::optional<double> parseFloat(std::string_view s) {
   return v;
 }
 
+/// A plain scalar whose first byte starts no null, bool, int or float of the core schema: a
+/// letter but n, t, f in either case (most scalars of a script: names and keys).
+bool isSurelyString(std::string_view text) {
+  char c = text.empty() ? '\0' : text[0];
+  bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+  return letter && std::string_view("nNtTfF").find(c) == std::string_view::npos;
+}
+
 }  // namespace
 
 ir::Value textValue(std::string_view text, SourceLoc loc) {
@@ -100,7 +108,7 @@ ScalarResult resolveScalar(std::string_view text, ScalarStyle style, std::string
     v.forced_string = true;
     return {std::move(v)};
   }
-  if (style == ScalarStyle::Quoted) return {textValue(text, loc)};
+  if (style == ScalarStyle::Quoted || isSurelyString(text)) return {textValue(text, loc)};
   if (text.empty() || text == "~" || text == "null" || text == "Null" || text == "NULL") {
     return {ir::Value::null(loc)};
   }

@@ -294,9 +294,10 @@ class SimpleYamlReader {
 
 }  // namespace
 
-std::optional<ir::Value> readSimpleYaml(uint32_t file, std::string_view text) {
+std::optional<ir::Value> readSimpleYaml(uint32_t file, std::string_view text, StatesSink* sink) {
   DiagnosticEmitter unused;  // the builder gives up instead of reporting
   YamlValueBuilder builder(file, unused, YamlProblems::GiveUp, text);
+  builder.setStatesSink(sink);
   if (!SimpleYamlReader(text, builder).read() || builder.gaveUp()) return std::nullopt;
   return builder.take();
 }

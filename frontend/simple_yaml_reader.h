@@ -15,10 +15,14 @@
 #include <optional>
 #include <string_view>
 
+#include "frontend/yaml_value_builder.h"
 #include "ir/value.h"
 
 namespace smachac::frontend {
 
-std::optional<ir::Value> readSimpleYaml(uint32_t file, std::string_view text);
+/// `sink`, when given, takes the items of the root's `states` list as they are read
+/// (YamlValueBuilder::setStatesSink); the tree returned then lacks the items it took.
+std::optional<ir::Value> readSimpleYaml(uint32_t file, std::string_view text,
+                                        StatesSink* sink = nullptr);
 
 }  // namespace smachac::frontend

@@ -99,19 +99,40 @@ bool scanSingleQuoted(YamlCursor& c, YamlScalar& out) {
   return true;
 }
 
+/// The bytes at which the scan of a plain scalar stops to look (one table lookup for every
+/// other byte, which is simply part of the scalar).
+struct PlainStops {
+  bool block[256] = {};
+  bool flow[256] = {};
+};
+
+constexpr PlainStops kPlainStops = [] {
+  PlainStops stops;
+  for (char c : std::string_view(" :\n")) stops.block[static_cast<unsigned char>(c)] = true;
+  for (char c : std::string_view(" :\n,[]{}#?\"'"))
+    stops.flow[static_cast<unsigned char>(c)] = true;
+  return stops;
+}();
+
 /// Moves past a block plain scalar, up to `: `, ` #` or the line end; returns one past its
 /// last non-space byte.
 size_t skipBlockPlain(YamlCursor& c) {
   std::string_view t = c.text;
   size_t i = c.pos;
   size_t end = c.pos;
-  for (; i < t.size() && t[i] != '\n'; ++i) {
+  for (; i < t.size(); ++i) {
+    char ch = t[i];
+    if (!kPlainStops.block[static_cast<unsigned char>(ch)]) {
+      end = i + 1;
+      continue;
+    }
+    if (ch == '\n') break;
     char next = i + 1 < t.size() ? t[i + 1] : '\0';
-    if (t[i] == ' ') {
+    if (ch == ' ') {
       if (next == '#') break;
       continue;
     }
-    if (t[i] == ':' && (next == ' ' || next == '\n' || next == '\0')) break;
+    if (next == ' ' || next == '\n' || next == '\0') break;  // `:` and a blank
     end = i + 1;
   }
   c.pos = i;
@@ -129,6 +150,10 @@ bool skipFlowPlain(YamlCursor& c, size_t& end) {
   std::string_view t = c.text;
   for (size_t i = c.pos; i < t.size(); ++i) {
     char ch = t[i];
+    if (!kPlainStops.flow[static_cast<unsigned char>(ch)]) {
+      end = i + 1;
+      continue;
+    }
     if (endsFlowPlain(ch, i + 1 < t.size() ? t[i + 1] : '\0')) {
       c.pos = i;
       return true;

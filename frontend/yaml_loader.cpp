@@ -58,11 +58,17 @@ std::optional<ir::Value> parseYaml(uint32_t file, const SourceManager& sources,
   return buildYamlValue(file, text, diags);
 }
 
+uint32_t readYamlFile(const std::string& path, SourceLoc from, SourceManager& sources,
+                      DiagnosticEmitter& diags) {
+  std::optional<std::string> text = readRegularFile(path, from, diags);
+  if (!text) return 0;
+  return sources.addFile(path, std::move(*text));
+}
+
 LoadedYaml loadYamlFile(const std::string& path, SourceLoc from, SourceManager& sources,
                         DiagnosticEmitter& diags) {
-  std::optional<std::string> text = readRegularFile(path, from, diags);
-  if (!text) return {};
-  uint32_t file = sources.addFile(path, std::move(*text));
+  uint32_t file = readYamlFile(path, from, sources, diags);
+  if (file == 0) return {};
   return {file, parseYaml(file, sources, diags)};
 }
 

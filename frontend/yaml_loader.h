@@ -21,6 +21,10 @@ struct LoadedYaml {
   std::optional<ir::Value> root;  ///< empty on errors
 };
 
+/// Reads `path` and registers its text in `sources`: the file id, or 0 after a diagnostic.
+uint32_t readYamlFile(const std::string& path, SourceLoc from, SourceManager& sources,
+                      DiagnosticEmitter& diags);
+
 /// Reads and parses `path` (`from` is the location that asked for it, for diagnostics about
 /// unreadable files; invalid for the main script).
 LoadedYaml loadYamlFile(const std::string& path, SourceLoc from, SourceManager& sources,

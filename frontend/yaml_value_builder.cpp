@@ -175,6 +175,7 @@ void YamlValueBuilder::finish(ir::Value&& v, uint64_t anchor, bool is_null, bool
     root_ = std::move(v);
     return;
   }
+  if (depth_ == 2 && sink_ && offerToSink(v)) return;
   Frame& parent = stack_[depth_ - 1];
   if (!parent.is_map) {
     parent.items.push_back(std::move(v));
@@ -183,6 +184,16 @@ void YamlValueBuilder::finish(ir::Value&& v, uint64_t anchor, bool is_null, bool
   } else {
     acceptValue(parent, std::move(v), is_null);
   }
+}
+
+/// An item of the root mapping's `states` list goes to the sink, if it takes it.
+bool YamlValueBuilder::offerToSink(ir::Value& v) {
+  const Frame& root = stack_[0];
+  const Frame& list = stack_[1];
+  if (!root.is_map || list.is_map || !root.has_key || !root.key_valid || root.key != "states") {
+    return false;
+  }
+  return sink_->take(v, {root.loc, root.entries, root.key_loc, list.loc});
 }
 
 void YamlValueBuilder::acceptKey(Frame& parent, std::string_view text, SourceLoc key_loc) {

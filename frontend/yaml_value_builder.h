@@ -4,6 +4,8 @@
 // nesting deeper than kMaxYamlDepth and documents that expand (through aliases) to more than
 // kMaxYamlNodes values or whose aliases copy more than kMaxYamlAliasBytes of text. Both
 // readers feed the same builder, so they agree on everything but the events themselves.
+// A StatesSink may take the items of the root's `states` list as they complete (streamed
+// lowering, streamed_lowering.h); they are then missing from the tree.
 #pragma once
 
 #include <cstdint>
@@ -30,6 +32,23 @@ struct YamlMark {
   int column = -1;
 };
 
+/// Where the root mapping's `states` list stands when one of its items is complete.
+struct StatesListSite {
+  SourceLoc root_loc;
+  const ir::Map& root_entries;  ///< the root's entries read so far, `states` not among them
+  SourceLoc states_key_loc;
+  SourceLoc list_loc;
+};
+
+/// Takes the items of the root mapping's `states` list one by one, as soon as each is complete
+/// (streamed_lowering.cpp lowers a big script's states while the rest is still being read).
+class StatesSink {
+ public:
+  virtual ~StatesSink() = default;
+  /// True when the sink took `item`; false leaves it in the list.
+  virtual bool take(ir::Value& item, const StatesListSite& site) = 0;
+};
+
 /// What the builder does about a problem in the document.
 enum class YamlProblems {
   Report,  ///< emit a diagnostic (and go on where the old path went on)
@@ -46,6 +65,8 @@ class YamlValueBuilder {
   /// The document, or nullopt after an error that leaves no usable document.
   std::optional<ir::Value> take();
   bool aborted() const { return aborted_; }
+  /// Hands the items of the root's `states` list to `sink` (nullptr: none) instead of the tree.
+  void setStatesSink(StatesSink* sink) { sink_ = sink; }
   /// True when a problem was found under YamlProblems::GiveUp.
   bool gaveUp() const { return gave_up_; }
 
@@ -93,6 +114,7 @@ class YamlValueBuilder {
   void acceptKey(Frame& parent, std::string_view text, SourceLoc key_loc);
   void rejectKey(Frame& parent, const ir::Value& key);
   void acceptValue(Frame& parent, ir::Value&& v, bool is_null);
+  bool offerToSink(ir::Value& v);
 
   uint32_t file_;
   DiagnosticEmitter& diags_;
@@ -106,6 +128,7 @@ class YamlValueBuilder {
   bool aborted_ = false;
   bool gave_up_ = false;
   ExprScalarReader exprs_;
+  StatesSink* sink_ = nullptr;
 };
 
 }  // namespace smachac::frontend

@@ -1,6 +1,8 @@
 // Module: the state store and tree navigation.
 #include "ir/module.h"
 
+#include <utility>
+
 namespace smachac::ir {
 
 std::string_view targetKindName(TargetKind kind) {
@@ -65,13 +67,20 @@ std::vector<StateId> Module::preorder() const {
   std::vector<StateId> order;
   if (!root_.valid()) return order;
   order.reserve(states_.size());
-  std::vector<StateId> stack{root_};
-  while (!stack.empty()) {
-    StateId id = stack.back();
-    stack.pop_back();
+  order.push_back(root_);
+  // The containers being walked, each with the position of its next child: one frame per
+  // level of nesting, not one entry per state.
+  std::vector<std::pair<const std::vector<StateId>*, size_t>> walk{{&state(root_).children, 0}};
+  while (!walk.empty()) {
+    auto& [children, next] = walk.back();
+    if (next == children->size()) {
+      walk.pop_back();
+      continue;
+    }
+    StateId id = (*children)[next++];
     order.push_back(id);
-    const std::vector<StateId>& children = state(id).children;
-    for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(*it);
+    const std::vector<StateId>& grandchildren = state(id).children;
+    if (!grandchildren.empty()) walk.push_back({&grandchildren, 0});
   }
   return order;
 }

@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <tuple>
@@ -17,6 +18,8 @@
 #include "backends/smach/python_extensions.h"
 #include "backends/smach/smach_lint.h"
 #include "backends/tmpl/environment.h"
+#include "backends/tmpl/error.h"
+#include "backends/tmpl/loader.h"
 #include "ir/support/suggest.h"
 #include "ir/type.h"
 #include "templates/builtin_templates.h"
@@ -82,16 +85,10 @@ bool fits(const ir::Value& v, const std::string& type) {
 class Checker {
  public:
   Checker(std::string_view target, const std::vector<std::string>& dirs, DiagnosticEmitter& diags)
-      : path_{dirs, builtinSets(target), templates::builtinTemplates()},
-        env_(path_.dirs, path_.builtin_sets, path_.builtins),
-        diags_(diags) {
-    // The target's filters and tests: the engine checks every filter a template names.
-    if (target == "cpp") {
-      cpp::registerCppExtensions(env_, converter_, false);
-    } else {
-      smach::registerPythonExtensions(env_, converter_, false);
-    }
-  }
+      : target_(target),
+        path_{dirs, builtinSets(target), templates::builtinTemplates()},
+        loader_(path_.dirs, path_.builtin_sets, path_.builtins),
+        diags_(diags) {}
 
   void run(const ir::Module& m) {
     for (ir::StateId id : m.preorder()) check(m.state(id), id == m.root());
@@ -123,7 +120,7 @@ class Checker {
   const std::optional<std::string>& resolve(const std::string& script_name) {
     auto it = resolved_.find(script_name);
     if (it == resolved_.end()) {
-      it = resolved_.emplace(script_name, env_.resolveScriptTemplate(script_name)).first;
+      it = resolved_.emplace(script_name, loader_.resolveScriptName(script_name)).first;
     }
     return it->second;
   }
@@ -131,7 +128,35 @@ class Checker {
   const std::optional<TemplateMeta>& metaOf(const std::string& file) {
     auto it = metas_.find(file);
     if (it != metas_.end()) return it->second;
-    return metas_.emplace(file, lookUpTemplateMeta(env_, path_, file)).first->second;
+    return metas_.emplace(file, readMeta(file)).first->second;
+  }
+
+  // The precompiled table first; a template file whose text never says `meta` has no meta
+  // block and is not compiled (one that did not compile would give none either).
+  std::optional<TemplateMeta> readMeta(const std::string& file) {
+    if (std::optional<std::optional<TemplateMeta>> table = precompiledTemplateMeta(path_, file)) {
+      return *table;
+    }
+    try {
+      std::optional<tmpl::TemplateSource> source = loader_.load(file);
+      if (source && source->text.find("meta") == std::string::npos) return std::nullopt;
+    } catch (const tmpl::Fault&) {  // an unreadable file: the lookup gives nullopt, as before
+    }
+    return lookUpTemplateMeta(environment(), path_, file);
+  }
+
+  /// The engine, made for the first template whose meta block must be read (resolving names
+  /// and the precompiled metas need none), with the target's filters and tests: the engine
+  /// checks every filter a template names.
+  tmpl::Environment& environment() {
+    if (env_) return *env_;
+    env_ = std::make_unique<tmpl::Environment>(path_.dirs, path_.builtin_sets, path_.builtins);
+    if (target_ == "cpp") {
+      cpp::registerCppExtensions(*env_, converter_, false);
+    } else {
+      smach::registerPythonExtensions(*env_, converter_, false);
+    }
+    return *env_;
   }
 
   void checkRequired(const ir::State& s, const TemplateMeta& meta) {
@@ -190,9 +215,11 @@ class Checker {
     return nullptr;
   }
 
+  std::string target_;
   generator::TemplatePath path_;
+  tmpl::Loader loader_;
   generator::ValueConverter converter_;
-  tmpl::Environment env_;
+  std::unique_ptr<tmpl::Environment> env_;
   DiagnosticEmitter& diags_;
   std::map<std::string, std::optional<TemplateMeta>> metas_;
   std::unordered_map<std::string, std::optional<std::string>> resolved_;

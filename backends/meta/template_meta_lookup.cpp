@@ -19,13 +19,21 @@ TemplateMeta fromTable(const templates::BuiltinMeta& row) {
 
 }  // namespace
 
-std::optional<TemplateMeta> lookUpTemplateMeta(tmpl::Environment& env,
-                                               const generator::TemplatePath& path,
-                                               const std::string& name) {
+std::optional<std::optional<TemplateMeta>> precompiledTemplateMeta(
+    const generator::TemplatePath& path, const std::string& name) {
   if (std::optional<std::string> builtin = generator::builtinTemplatePath(path, name)) {
     if (const templates::BuiltinMeta* row = templates::findBuiltinMeta(*builtin)) {
       return row->parsed ? std::optional<TemplateMeta>(fromTable(*row)) : std::nullopt;
     }
+  }
+  return std::nullopt;
+}
+
+std::optional<TemplateMeta> lookUpTemplateMeta(tmpl::Environment& env,
+                                               const generator::TemplatePath& path,
+                                               const std::string& name) {
+  if (std::optional<std::optional<TemplateMeta>> table = precompiledTemplateMeta(path, name)) {
+    return *table;
   }
   try {
     std::optional<std::string> text = env.metaBlock(name);

@@ -19,4 +19,9 @@ std::optional<TemplateMeta> lookUpTemplateMeta(tmpl::Environment& env,
                                                const generator::TemplatePath& path,
                                                const std::string& name);
 
+/// The table's answer for a built-in template (the same as lookUpTemplateMeta's), or nullopt
+/// when the table has none and the engine must read the template.
+std::optional<std::optional<TemplateMeta>> precompiledTemplateMeta(
+    const generator::TemplatePath& path, const std::string& name);
+
 }  // namespace smachac::backends

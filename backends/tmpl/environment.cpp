@@ -32,8 +32,8 @@ const Template& EnvironmentImpl::load(std::string_view name) {
     fail("template `" + std::string(name) + "` not found; looked in " +
          loader_.searchDescription());
   }
-  auto compiled =
-      std::make_unique<Template>(std::string(name), source->origin, source->text, registry_);
+  auto compiled = std::make_unique<Template>(std::string(name), source->origin, source->text,
+                                             registry_, source->builtin, source->tokens);
   const Template& result = *compiled;
   templates_.emplace(std::string(name), std::move(compiled));
   return result;

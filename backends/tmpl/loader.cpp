@@ -34,7 +34,18 @@ Loader::Loader(std::vector<std::string> dirs, std::vector<std::string> builtin_s
   for (std::string& set : builtin_sets_) {
     if (!set.empty() && set.back() != '/') set += '/';
   }
-  for (const EmbeddedFile& file : builtins) builtins_.emplace(std::string(file.path), file.content);
+  builtins_.assign(builtins.begin(), builtins.end());
+  // Sorted, and the first of equal paths kept (what a map's emplace kept).
+  std::stable_sort(builtins_.begin(), builtins_.end(),
+                   [](const EmbeddedFile& a, const EmbeddedFile& b) { return a.path < b.path; });
+  auto duplicate = [](const EmbeddedFile& a, const EmbeddedFile& b) { return a.path == b.path; };
+  builtins_.erase(std::unique(builtins_.begin(), builtins_.end(), duplicate), builtins_.end());
+}
+
+const EmbeddedFile* Loader::findBuiltin(std::string_view path) const {
+  auto it = std::lower_bound(builtins_.begin(), builtins_.end(), path,
+                             [](const EmbeddedFile& e, std::string_view p) { return e.path < p; });
+  return it != builtins_.end() && it->path == path ? &*it : nullptr;
 }
 
 void Loader::addMemory(std::string name, std::string text) {
@@ -43,7 +54,7 @@ void Loader::addMemory(std::string name, std::string text) {
 
 std::optional<TemplateSource> Loader::load(std::string_view raw_name) const {
   if (auto it = memory_.find(raw_name); it != memory_.end())
-    return TemplateSource{it->first, it->second};
+    return TemplateSource{it->first, it->second, false, {}};
   std::optional<std::string> name = normalizeTemplateName(raw_name);
   if (!name) return std::nullopt;
   for (const std::string& dir : dirs_) {
@@ -52,11 +63,12 @@ std::optional<TemplateSource> Loader::load(std::string_view raw_name) const {
     if (!fs::is_regular_file(path, ec)) continue;
     std::optional<std::string> text = readFileText(path.string());
     if (!text) fail("cannot read template file `" + path.string() + "`");
-    return TemplateSource{path.lexically_normal().string(), std::move(*text)};
+    return TemplateSource{path.lexically_normal().string(), std::move(*text), false, {}};
   }
   for (const std::string& set : builtin_sets_) {
-    if (auto it = builtins_.find(set + *name); it != builtins_.end()) {
-      return TemplateSource{"<builtin>/" + it->first, std::string(it->second)};
+    if (const EmbeddedFile* file = findBuiltin(set + *name)) {
+      return TemplateSource{"<builtin>/" + std::string(file->path), std::string(file->content),
+                            true, file->tokens};
     }
   }
   return std::nullopt;
@@ -71,7 +83,7 @@ bool Loader::exists(std::string_view raw_name) const {
     if (fs::is_regular_file(fs::path(dir) / *name, ec)) return true;
   }
   return std::any_of(builtin_sets_.begin(), builtin_sets_.end(),
-                     [&](const std::string& set) { return builtins_.count(set + *name) > 0; });
+                     [&](const std::string& set) { return findBuiltin(set + *name) != nullptr; });
 }
 
 std::vector<std::string> Loader::listDir(const std::string& dir, std::string_view subdir) const {
@@ -127,10 +139,12 @@ std::optional<std::string> Loader::resolveScriptName(std::string_view raw_name) 
   for (const std::string& set : builtin_sets_) {
     std::string prefix = set + subdir;
     std::vector<std::string> entries;
-    for (auto it = builtins_.lower_bound(prefix); it != builtins_.end(); ++it) {
-      if (it->first.compare(0, prefix.size(), prefix) != 0) break;
-      std::string rest = it->first.substr(prefix.size());
-      if (rest.find('/') == std::string::npos) entries.push_back(rest);
+    auto from =
+        std::lower_bound(builtins_.begin(), builtins_.end(), std::string_view(prefix),
+                         [](const EmbeddedFile& e, std::string_view p) { return e.path < p; });
+    for (auto it = from; it != builtins_.end() && it->path.starts_with(prefix); ++it) {
+      std::string_view rest = it->path.substr(prefix.size());
+      if (rest.find('/') == std::string_view::npos) entries.emplace_back(rest);
     }
     if (auto found = resolveIn(entries, base)) return subdir + *found;
   }

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "ir/support/embedded_file.h"
@@ -17,6 +18,8 @@ namespace smachac::tmpl {
 struct TemplateSource {
   std::string origin;  // what errors name: a file path or `<builtin>/smach/State.tpl.py`
   std::string text;
+  bool builtin = false;  // from the embedded table (text that the build checked compiles)
+  std::span<const uint32_t> tokens;  // the build's tokens of a built-in template, if any
 };
 
 class Loader {
@@ -38,10 +41,13 @@ class Loader {
   std::optional<std::string> resolveIn(const std::vector<std::string>& entries,
                                        std::string_view name) const;
   std::vector<std::string> listDir(const std::string& dir, std::string_view subdir) const;
+  const EmbeddedFile* findBuiltin(std::string_view path) const;
 
   std::vector<std::string> dirs_;
   std::vector<std::string> builtin_sets_;
-  std::map<std::string, std::string_view, std::less<>> builtins_;
+  // Sorted by path; views into the caller's table, which outlives the loader (an
+  // Environment's builtins). A sorted vector: one allocation for a table of a hundred.
+  std::vector<EmbeddedFile> builtins_;
   std::map<std::string, std::string, std::less<>> memory_;
 };
 

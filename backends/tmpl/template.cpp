@@ -1,27 +1,52 @@
 // Template compilation: normalise, tokenise, parse, analyse scopes.
 #include "backends/tmpl/template.h"
 
+#include <algorithm>
+
 #include "backends/tmpl/ast/scope.h"
 #include "backends/tmpl/lexer/lexer.h"
+#include "backends/tmpl/lexer/token_table.h"
 #include "backends/tmpl/parser/parser.h"
 #include "ir/support/unicode.h"
 
 namespace smachac::tmpl {
 
 Template::Template(std::string name, std::string origin, std::string_view source,
-                   const Registry& registry)
-    : name_(std::move(name)), origin_(std::move(origin)), source_(normalizeSource(source)) {
+                   const Registry& registry, bool defer_macros, std::span<const uint32_t> tokens)
+    : name_(std::move(name)),
+      origin_(std::move(origin)),
+      source_(normalizeSource(source)),
+      registry_(registry) {
   try {
-    std::vector<Token> tokens = tokenize(source_);
-    ParsedTemplate parsed = parseTemplate(source_, tokens, registry, arena_);
+    std::optional<std::vector<Token>> stored = unpackTokens(tokens, source_);
+    std::vector<Token> lexed = stored ? std::move(*stored) : tokenize(source_);
+    ParsedTemplate parsed = parseTemplate(source_, lexed, registry, arena_, defer_macros);
     analyzeScopes(parsed, root_frame_);
     body_ = std::move(parsed.body);
     blocks_ = std::move(parsed.blocks);
     references_ = std::move(parsed.references);
     has_extends_ = parsed.has_extends;
+    deferred_ = std::move(parsed.deferred);
+    if (!deferred_.empty()) tokens_ = std::move(lexed);
   } catch (const SyntaxFault& fault) {
     throw error(fault.pos, fault.message);
   }
+}
+
+void Template::completeMacro(const MacroStmt& macro) const {
+  auto it = std::find_if(deferred_.begin(), deferred_.end(),
+                         [&](const DeferredMacro& d) { return d.macro == &macro; });
+  if (it == deferred_.end()) return;
+  try {
+    Parser parser(source_, tokens_, registry_, arena_);
+    parser.parseDeferredMacro(*it);
+    analyzeDeferredMacro(*it);
+  } catch (const SyntaxFault& fault) {
+    throw error(fault.pos, fault.message);
+  }
+  it->macro->deferred = false;
+  deferred_.erase(it);
+  if (deferred_.empty()) std::vector<Token>().swap(tokens_);
 }
 
 const BlockStmt* Template::block(std::string_view name) const {

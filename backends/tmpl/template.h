@@ -4,6 +4,7 @@
 
 #include <deque>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "backends/tmpl/ast/ast.h"
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/filters/builtins.h"
+#include "backends/tmpl/parser/parser.h"
 
 namespace smachac::tmpl {
 
@@ -39,7 +41,12 @@ class Template {
  public:
   /// Compiles `source`; raises TemplateError (syntax error, unknown filter or test).
   /// `origin` is what errors name (a file path, or `<builtin>/smach/State.tpl.py`).
-  Template(std::string name, std::string origin, std::string_view source, const Registry& registry);
+  /// With `defer_macros` (built-in templates, whose text is known to compile), top-level
+  /// macros that allow it are parsed on their first call (parser/deferred_macro.cpp).
+  /// `tokens`, if given, are the build's tokens of `source` (lexer/token_table.h), used
+  /// instead of lexing it when they fit it. `registry` must outlive the template.
+  Template(std::string name, std::string origin, std::string_view source, const Registry& registry,
+           bool defer_macros = false, std::span<const uint32_t> tokens = {});
   Template(const Template&) = delete;
   Template& operator=(const Template&) = delete;
 
@@ -58,18 +65,24 @@ class Template {
   std::pair<int, int> lineColumn(uint32_t pos) const;
   TemplateError error(uint32_t pos, std::string message) const;
   std::vector<std::unique_ptr<SkipMask>>& skipMasks() const { return skip_masks_; }
+  /// Parses and analyses a deferred macro of this template (MacroStmt::deferred);
+  /// raises TemplateError as the eager parse would have.
+  void completeMacro(const MacroStmt& macro) const;
 
  private:
   std::string name_;
   std::string origin_;
   std::string source_;
-  Arena arena_;
+  const Registry& registry_;
+  mutable Arena arena_;  // deferred macro bodies are added on their first call
   Body body_;
   FrameLayout root_frame_;
   std::vector<BlockStmt*> blocks_;
   std::vector<std::pair<std::string, uint32_t>> references_;
   bool has_extends_ = false;
   mutable std::vector<std::unique_ptr<SkipMask>> skip_masks_;
+  mutable std::vector<Token> tokens_;  // kept while macros are deferred
+  mutable std::vector<DeferredMacro> deferred_;
 };
 
 }  // namespace smachac::tmpl

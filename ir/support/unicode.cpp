@@ -2,6 +2,8 @@
 #include "ir/support/unicode.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 
 namespace smachac::unicode {
 namespace {
@@ -216,12 +218,29 @@ std::string swapcase(std::string_view s) {
   return out;
 }
 
+namespace {
+
+// Whether the 8 bytes at `p` are all spaces or line feeds, which most of the whitespace that
+// templates leave around a rendered block is: strip skips such runs 8 bytes at a time.
+bool blankWord(const char* p) {
+  uint64_t word = 0;
+  std::memcpy(&word, p, sizeof word);
+  constexpr uint64_t kOnes = 0x0101010101010101ull;
+  constexpr uint64_t kLow7 = 0x7F7F7F7F7F7F7F7Full;
+  auto zero_bytes = [](uint64_t v) { return ~(((v & kLow7) + kLow7) | v | kLow7); };
+  return (zero_bytes(word ^ (kOnes * ' ')) | zero_bytes(word ^ (kOnes * '\n'))) == ~kLow7;
+}
+
+}  // namespace
+
 std::string_view strip(std::string_view s, bool left, bool right) {
   auto ascii_space = [](unsigned char c) {
     return (c >= 0x09 && c <= 0x0D) || (c >= 0x1C && c <= 0x20);
   };
   size_t begin = 0;
   size_t end = s.size();
+  while (left && end - begin >= 8 && blankWord(s.data() + begin)) begin += 8;
+  while (right && end - begin >= 8 && blankWord(s.data() + end - 8)) end -= 8;
   while (left && begin < end) {
     auto c = static_cast<unsigned char>(s[begin]);
     if (c < 0x80) {

@@ -263,5 +263,46 @@ class Targets(unittest.TestCase):
         self.assertEqual((r.returncode, r.stdout, r.stderr), (0, "", ""))
 
 
+class QuickCommandLines(TempDirTest):
+    """The common compile lines are read without CLI11 (tools/smachac/quick_args.h): each must
+    do what CLI11 makes of it. `--fdiagnostics-format=text` (the default) sends a line to CLI11."""
+
+    def outcome(self, args, out):
+        if os.path.exists(out):
+            os.remove(out)
+        r = run(*args)
+        text = open(out).read() if os.path.exists(out) else None
+        return r.returncode, r.stdout, r.stderr, text
+
+    def test_quick_lines_mean_what_cli11_reads(self):
+        nesting = os.path.join(EXAMPLES, "nesting.yml")
+        sub = os.path.join(EXAMPLES, "sub_scripts.yml")
+        valid = self.write("ok.yml", VALID)
+        out = os.path.join(self.dir, "out.txt")
+        lines = [
+            ["-target=smach", nesting, "-o", out],
+            ["--target", "smach", nesting, "-o", out, "-c", "-i"],
+            ["-target=smach", "-O", "--comments", "--output=" + out, nesting],
+            ["-target=ir", "-I", self.dir, "-S", os.path.join(EXAMPLES, "sub"),
+             "--template-dir=" + EXAMPLES, sub, "-o", out],
+            ["-fsyntax-only", nesting, valid],
+            ["-target=cpp", "--introspection", "--optimize", nesting, "-o", out],
+            ["-target=nosuch", nesting, "-o", out],
+            [nesting, valid, "-o", out],
+            [],
+            # not quick: combined flags, a repeated option, an empty or missing value
+            ["-target=smach", "-ci", nesting, "-o", out],
+            ["-o", out, "-o", out, nesting],
+            ["-target=", nesting],
+            [nesting, "-o"],
+            ["-target=smach", nesting, "-o", "-"],
+        ]
+        for line in lines:
+            with self.subTest(line=line):
+                quick = self.outcome(line, out)
+                cli11 = self.outcome(["--fdiagnostics-format=text"] + line, out)
+                self.assertEqual(quick, cli11)
+
+
 if __name__ == "__main__":
     unittest.main()

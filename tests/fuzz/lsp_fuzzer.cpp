@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <set>
 #include <sstream>
 #include <string>
@@ -172,10 +173,18 @@ std::set<int64_t> answered(const std::string& output) {
 }
 
 /// Built-in templates' copies (a definition on `template:`) go to a temporary cache, not the
-/// user's.
+/// user's; it is removed when the fuzzer exits.
+char cache_directory[] = "/tmp/smachac_lsp_fuzzer_XXXXXX";
+
+void removeTemporaryCache() {
+  std::error_code ignored;
+  std::filesystem::remove_all(cache_directory, ignored);
+}
+
 bool useTemporaryCache() {
-  char directory[] = "/tmp/smachac_lsp_fuzzer_XXXXXX";
-  return mkdtemp(directory) != nullptr && setenv("XDG_CACHE_HOME", directory, 1) == 0;
+  if (mkdtemp(cache_directory) == nullptr) return false;
+  std::atexit(removeTemporaryCache);
+  return setenv("XDG_CACHE_HOME", cache_directory, 1) == 0;
 }
 
 }  // namespace

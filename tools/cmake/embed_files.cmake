@@ -1,24 +1,35 @@
-# smachac_embed_files(<target> NAMESPACE <ns> FUNCTION <fn> BASE_DIR <dir> FILES <files...>)
+# smachac_embed_files(<target> [TOKENS] NAMESPACE <ns> FUNCTION <fn> BASE_DIR <dir>
+#                     FILES <files...>)
 #
 # Builds a static library <target> with one function
 #   std::span<const smachac::EmbeddedFile> <ns>::<fn>();
-# listing every file (path relative to BASE_DIR, bytes) in the order given. The generated
-# source is rebuilt whenever one of the files changes. Used to embed templates/ into the
+# listing every file (path relative to BASE_DIR, bytes) in the order given; with TOKENS, also
+# each file's tokens as the template engine lexes it (the files are templates; one that does
+# not lex fails the build). The generator is embed_gen.cpp; the generated source is rebuilt
+# whenever one of the files changes. Used to embed templates/ into the
 # compiler so that a built binary needs no data files. The calling folder is the library's
 # include root (its header declares <fn>).
 function(smachac_embed_files target)
-  cmake_parse_arguments(EMB "" "NAMESPACE;FUNCTION;BASE_DIR" "FILES" ${ARGN})
+  cmake_parse_arguments(EMB "TOKENS" "NAMESPACE;FUNCTION;BASE_DIR" "FILES" ${ARGN})
+  if(NOT TARGET smachac_embed_gen)
+    add_executable(smachac_embed_gen "${PROJECT_SOURCE_DIR}/tools/cmake/embed_gen.cpp")
+    target_link_libraries(smachac_embed_gen PRIVATE smachac_tmpl)
+  endif()
   set(out "${CMAKE_CURRENT_BINARY_DIR}/${target}_embedded.cpp")
+  # The list of files as a dependency: adding or removing one regenerates the table.
   set(list_file "${CMAKE_CURRENT_BINARY_DIR}/${target}_files.txt")
   string(REPLACE ";" "\n" files_text "${EMB_FILES}")
   file(WRITE "${list_file}.in" "${files_text}")
   configure_file("${list_file}.in" "${list_file}" COPYONLY)
+  set(tokens_flag "")
+  if(EMB_TOKENS)
+    set(tokens_flag "--tokens")
+  endif()
   add_custom_command(
     OUTPUT "${out}"
-    COMMAND ${CMAKE_COMMAND} -DOUT=${out} -DLIST=${list_file} -DBASE=${EMB_BASE_DIR}
-            -DNS=${EMB_NAMESPACE} -DFN=${EMB_FUNCTION}
-            -P "${PROJECT_SOURCE_DIR}/tools/cmake/embed_files_gen.cmake"
-    DEPENDS ${EMB_FILES} "${list_file}" "${PROJECT_SOURCE_DIR}/tools/cmake/embed_files_gen.cmake"
+    COMMAND smachac_embed_gen "${out}" ${EMB_NAMESPACE} ${EMB_FUNCTION} "${EMB_BASE_DIR}"
+            ${tokens_flag} ${EMB_FILES}
+    DEPENDS smachac_embed_gen ${EMB_FILES} "${list_file}"
     COMMENT "Embedding ${target}"
     VERBATIM)
   add_library(${target} STATIC "${out}")

@@ -8,7 +8,6 @@
 // backends/meta/template_check.cpp registers them.
 // Usage: smachac_meta_table_gen OUT_FILE BASE_DIR TEMPLATE_FILE...
 #include <algorithm>
-#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -22,8 +21,11 @@
 #include "backends/meta/template_meta.h"
 #include "backends/smach/python_extensions.h"
 #include "backends/tmpl/environment.h"
+#include "cpp_literal.h"
 
 namespace {
+
+using smachac::build::cppStringLiteral;
 
 namespace fs = std::filesystem;
 using smachac::EmbeddedFile;
@@ -73,24 +75,9 @@ std::optional<std::optional<TemplateMeta>> precompile(const Source& source,
   }
 }
 
-/// A C++ string literal of `text`: printable ASCII as is, every other byte in octal.
-std::string literal(std::string_view text) {
-  std::string out = "\"";
-  for (unsigned char c : text) {
-    if (c >= 0x20 && c < 0x7f && c != '"' && c != '\\' && c != '?') {
-      out += static_cast<char>(c);
-    } else {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\%03o", c);
-      out += escaped;
-    }
-  }
-  return out + "\"";
-}
-
 std::string stringArray(const std::string& name, const std::vector<std::string>& items) {
   std::string out = "constexpr std::string_view " + name + "[] = {";
-  for (const std::string& item : items) out += literal(item) + ", ";
+  for (const std::string& item : items) out += cppStringLiteral(item) + ", ";
   return out + "};\n";
 }
 
@@ -105,8 +92,8 @@ class TableWriter {
       data_ += stringArray("kOutcomes" + id, meta->outcomes);
       outcomes = "kOutcomes" + id;
     }
-    table_ += "    {" + literal(path) + ", " + (meta ? "true" : "false") + ", " + variables + ", " +
-              outcomes + "},\n";
+    table_ += "    {" + cppStringLiteral(path) + ", " + (meta ? "true" : "false") + ", " +
+              variables + ", " + outcomes + "},\n";
     ++rows_;
   }
 
@@ -130,8 +117,8 @@ class TableWriter {
         types = "kTypes" + id + "_" + std::to_string(i);
         data_ += stringArray(types, v.types);
       }
-      rows += "    {" + literal(v.name) + ", " + types + ", " + (v.required ? "true" : "false") +
-              ", " + std::to_string(v.alternative_group) + "},\n";
+      rows += "    {" + cppStringLiteral(v.name) + ", " + types + ", " +
+              (v.required ? "true" : "false") + ", " + std::to_string(v.alternative_group) + "},\n";
     }
     data_ += "constexpr BuiltinMetaVariable kVariables" + id + "[] = {\n" + rows + "};\n";
     return "kVariables" + id;

@@ -10,28 +10,17 @@
 #include "backends/targets.h"
 #include "ir/support/version.h"
 #include "tools/smachac/args.h"
+#include "tools/smachac/compile_options.h"
 #include "tools/smachac/depfile.h"
 #include "tools/smachac/library_output.h"
 #include "tools/smachac/output.h"
+#include "tools/smachac/quick_args.h"
 #include "tools/smachac/script_inputs.h"
 #include "tools/smachac/session.h"
 #include "tools/smachac/warning_help.h"
 
 namespace smachac::driver {
 namespace {
-
-struct CompileOptions {
-  CommonOptions common;
-  ScriptInputs scripts;
-  std::string output;
-  std::string depfile;
-  std::string emit;
-  bool syntax_only = false;
-  bool comments = false;
-  bool introspection = false;
-  bool list_targets = false;
-  int flexbe_ros = 2;
-};
 
 std::string targetNames() {
   std::string names;
@@ -163,10 +152,13 @@ std::variant<std::optional<LibraryOutput>, int> libraryOutputOf(const CompileOpt
 int runCompile(const Args& raw_args) {
   Args args = raw_args;
   std::vector<std::string> warning_flags = takeWarningFlags(args);
-  CLI::App app;
-  CompileOptions o;
-  setUp(app, o);
-  if (std::optional<int> code = parseArgs(app, args)) return *code;
+  std::optional<CompileOptions> quick = readQuickCompileLine(args);
+  CompileOptions o = quick ? std::move(*quick) : CompileOptions();
+  if (!quick) {
+    CLI::App app;
+    setUp(app, o);
+    if (std::optional<int> code = parseArgs(app, args)) return *code;
+  }
   if (o.common.list_passes) return printPassList(), kExitOk;
   if (o.scripts.list_warnings) return printWarningList(), kExitOk;
   if (o.list_targets) {

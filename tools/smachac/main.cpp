@@ -1,5 +1,6 @@
 // smachac's entry point: normalises the command line, picks the subcommand, and runs it on a
 // thread with a large stack (deeply nested input must give a diagnostic, not a crash).
+#include <malloc.h>
 #include <pthread.h>
 
 #include <cstdio>
@@ -45,6 +46,9 @@ void* runJob(void* raw) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // One malloc arena: the job thread allocates from the main thread's (which waits) rather
+  // than mapping an arena of its own and handing it back at exit.
+  mallopt(M_ARENA_MAX, 1);
   Job job{smachac::driver::normalizeArgs(Args(argv + 1, argv + argc))};
   constexpr size_t kStackBytes = size_t{1} << 30;  // reserved, not committed
   pthread_attr_t attr;

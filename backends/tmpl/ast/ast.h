@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "backends/tmpl/ast/arena.h"
 #include "backends/tmpl/values/value.h"
 #include "backends/tmpl/values/value_ops.h"
 
@@ -308,6 +309,8 @@ struct ImportStmt : Stmt {
 struct ImportedName {
   const std::string* name;
   NameExpr* alias;
+  /// Where the name was in the exports of the module last imported (checked before use).
+  mutable size_t export_hint = 0;
 };
 
 struct FromImportStmt : Stmt {
@@ -332,6 +335,7 @@ struct MacroStmt : Stmt {
   int kwargs_slot = -1;
   int varargs_slot = -1;
   bool toplevel = false;
+  bool deferred = false;  // params, body, slots, frame not there yet (Template::completeMacro)
   MacroStmt(StmtKind k, uint32_t p) : Stmt(k, p) {}
 };
 
@@ -376,24 +380,10 @@ struct DoStmt : Stmt {
   DoStmt(uint32_t p, Expr* e) : Stmt(StmtKind::Do, p), expr(e) {}
 };
 
-/// Owns the nodes of one template.
-class Arena {
- public:
-  template <class T, class... Args>
-  T* make(Args&&... args) {
-    auto node = std::make_unique<T>(std::forward<Args>(args)...);
-    T* raw = node.get();
-    if constexpr (std::is_base_of_v<Expr, T>) {
-      exprs_.push_back(std::move(node));
-    } else {
-      stmts_.push_back(std::move(node));
-    }
-    return raw;
-  }
-
- private:
-  std::vector<std::unique_ptr<Expr>> exprs_;
-  std::vector<std::unique_ptr<Stmt>> stmts_;
-};
+/// Runs the destructors of the arena's nodes (arena.h), newest first.
+inline Arena::~Arena() {
+  for (auto it = stmts_.rbegin(); it != stmts_.rend(); ++it) (*it)->~Stmt();
+  for (auto it = exprs_.rbegin(); it != exprs_.rend(); ++it) (*it)->~Expr();
+}
 
 }  // namespace smachac::tmpl

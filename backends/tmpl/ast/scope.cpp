@@ -4,8 +4,8 @@
 #include "backends/tmpl/ast/scope.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <memory>
-#include <set>
 
 #include "backends/tmpl/ast/ast_walk.h"
 
@@ -83,9 +83,11 @@ struct Symbols {
     if (!findRef(n)) defineRef(n, {SlotInitKind::Resolve});
   }
 
-  void branchUpdate(const std::vector<Symbols>& branches) {
+  // The branches are copies of this level taken before they ran (Jinja's sym.copy()).
+  void branchUpdate(std::initializer_list<const Symbols*> branches) {
     std::vector<std::pair<Name, size_t>> counts;
-    for (const Symbols& b : branches) {
+    for (const Symbols* branch : branches) {
+      const Symbols& b = *branch;
       for (Name t : b.stores) {
         if (stored(t)) continue;
         auto it = std::find_if(counts.begin(), counts.end(), [&](auto& c) { return c.first == t; });
@@ -96,7 +98,8 @@ struct Symbols {
         }
       }
     }
-    for (const Symbols& b : branches) {
+    for (const Symbols* branch : branches) {
+      const Symbols& b = *branch;
       for (Name r : b.refs) {
         if (!owns(r)) refs.push_back(r);
       }
@@ -125,9 +128,12 @@ struct Symbols {
 };
 
 // Jinja's find_undeclared: which of `names` are loaded before any store, not entering blocks.
+// Names are interned, so they are compared by address.
 class UndeclaredFinder {
  public:
-  explicit UndeclaredFinder(std::set<std::string> names) : names_(std::move(names)) {}
+  explicit UndeclaredFinder(std::initializer_list<const char*> names) {
+    for (const char* n : names) names_.push_back(intern(n));
+  }
 
   void visitBody(const Body& body) {
     for (const Stmt* s : body) {
@@ -140,24 +146,30 @@ class UndeclaredFinder {
   void visitExpr(const Expr* e) {
     if (e->kind == ExprKind::Name) {
       auto* n = static_cast<const NameExpr*>(e);
-      if (n->ctx == NameCtx::Load && names_.count(*n->name)) {
-        undeclared_.insert(*n->name);
+      auto it = std::find(names_.begin(), names_.end(), n->name);
+      if (it == names_.end()) return;
+      if (n->ctx == NameCtx::Load) {
+        if (!has(n->name)) undeclared_.push_back(n->name);
       } else {
-        names_.erase(*n->name);
+        names_.erase(it);
       }
       return;
     }
     forEachChild(e, [this](Expr* c) { visitExpr(c); });
   }
 
-  bool has(const std::string& name) const { return undeclared_.count(name) > 0; }
+  bool has(const char* name) const { return has(intern(name)); }
 
  private:
-  std::set<std::string> names_;
-  std::set<std::string> undeclared_;
+  bool has(Name name) const {
+    return std::find(undeclared_.begin(), undeclared_.end(), name) != undeclared_.end();
+  }
+
+  std::vector<Name> names_;
+  std::vector<Name> undeclared_;
 };
 
-bool undeclared(const Body& body, const std::string& name) {
+bool undeclared(const Body& body, const char* name) {
   UndeclaredFinder finder({name});
   finder.visitBody(body);
   return finder.has(name);
@@ -178,6 +190,7 @@ bool containsScopedBlock(const Body& body) {
 class Analyzer {
  public:
   void analyzeRoot(ParsedTemplate& parsed, FrameLayout& layout) {
+    deferred_ = &parsed.deferred;
     Symbols& table = newTable(nullptr);
     for (Stmt* s : parsed.body) visitStmt(s, table);
     resolveBody(parsed.body, table, true);
@@ -220,7 +233,8 @@ class Analyzer {
     visitExpr(test, sym);
     Symbols body_sym = sym;
     visitBody(body, body_sym);
-    sym.branchUpdate({body_sym, sym, sym});
+    Symbols unchanged = sym;  // the empty elif and else branches
+    sym.branchUpdate({&body_sym, &unchanged, &unchanged});
   }
 
   void visitStmt(Stmt* stmt, Symbols& sym) {
@@ -239,7 +253,7 @@ class Analyzer {
         }
         Symbols else_sym = sym;
         visitBody(s->orelse, else_sym);
-        sym.branchUpdate({body_sym, elif_sym, else_sym});
+        sym.branchUpdate({&body_sym, &elif_sym, &else_sym});
         return;
       }
       case StmtKind::For:
@@ -369,6 +383,7 @@ class Analyzer {
         markCapturing(sym);
         resolveExpr(s->target, sym);
         s->toplevel = root;
+        if (s->deferred) return keepRootScope(s, sym);
         return analyzeMacro(s, sym);
       }
       case StmtKind::CallBlock: {
@@ -465,6 +480,26 @@ class Analyzer {
     s->frame = layoutOf(sym);
   }
 
+  // A deferred macro is top-level: its outer scope is the root's, as it is now (the root
+  // only gains names later; the body's analysis reads names, slots and stores).
+  void keepRootScope(MacroStmt* s, const Symbols& root) {
+    for (DeferredMacro& d : *deferred_) {
+      if (d.macro != s) continue;
+      d.root_refs = root.refs;
+      d.root_stores = root.stores;
+    }
+  }
+
+ public:
+  void analyzeDeferred(const DeferredMacro& d) {
+    Symbols& root = newTable(nullptr);
+    root.refs = d.root_refs;
+    root.stores = d.root_stores;
+    root.capturing = true;
+    analyzeMacro(d.macro, root);
+  }
+
+ private:
   void analyzeMacro(MacroStmt* s, Symbols& outer) {
     Symbols& sym = newTable(&outer);
     UndeclaredFinder finder({"caller", "kwargs", "varargs"});
@@ -545,6 +580,7 @@ class Analyzer {
   }
 
   std::vector<std::unique_ptr<Symbols>> tables_;
+  std::vector<DeferredMacro>* deferred_ = nullptr;
 };
 
 }  // namespace
@@ -552,5 +588,7 @@ class Analyzer {
 void analyzeScopes(ParsedTemplate& parsed, FrameLayout& root_frame) {
   Analyzer().analyzeRoot(parsed, root_frame);
 }
+
+void analyzeDeferredMacro(const DeferredMacro& deferred) { Analyzer().analyzeDeferred(deferred); }
 
 }  // namespace smachac::tmpl

@@ -12,6 +12,11 @@ namespace smachac::tmpl {
 
 /// Fills slot references, frame layouts and top-level flags; raises SyntaxFault for scoping
 /// errors (e.g. `extends` inside a loop).
+/// A deferred macro (parser.h) is left as it is; what its body will see of the root scope is
+/// kept in `parsed.deferred`.
 void analyzeScopes(ParsedTemplate& parsed, FrameLayout& root_frame);
+
+/// Analyses a deferred macro once its body is parsed, as analyzeScopes would have.
+void analyzeDeferredMacro(const DeferredMacro& deferred);
 
 }  // namespace smachac::tmpl

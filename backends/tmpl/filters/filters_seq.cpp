@@ -21,11 +21,19 @@ Value joinFilter(Exec&, const Value& in, Args args) {
   AttrPath path(b.get(1, Value::none()));
   std::string out;
   bool first = true;
-  for (const Value& item : iterate(in)) {
-    if (!first) out += sep;
-    first = false;
-    appendStr(out, path.get(item));
-    checkSize(out.size(), "string");
+  auto join = [&](const std::vector<Value>& items) {
+    for (const Value& item : items) {
+      if (!first) out += sep;
+      first = false;
+      appendStr(out, path.get(item));
+      checkSize(out.size(), "string");
+    }
+  };
+  // Printing runs no template code, so a list can be read in place instead of copied.
+  if (in.isListOrTuple()) {
+    join(in.list().items());
+  } else {
+    join(iterate(in));
   }
   return Value::string(std::move(out));
 }

@@ -96,8 +96,9 @@ Value indentFilter(Exec&, const Value& in, Args args) {
   }
   bool first = b.getBool(1, false);
   const std::string& input = in.s();
-  if (!mayHaveLineBreak(input))
-    return Value::string(first ? indention + input : input, in.isMarkup());
+  if (!mayHaveLineBreak(input)) {  // one line: only `first` changes it
+    return first && !indention.empty() ? Value::string(indention + input, in.isMarkup()) : in;
+  }
   std::string text = input + "\n";  // as Jinja does, so that a final line break is kept
   std::vector<std::string_view> lines = lineViews(text, false);
   bool blank = b.getBool(2, false);

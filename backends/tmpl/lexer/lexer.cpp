@@ -18,6 +18,8 @@ struct TagStart {
 };
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
+// Python's str.isspace for one ASCII byte (unicode::isSpace without decoding).
+bool isAsciiSpace(unsigned char c) { return (c >= 0x09 && c <= 0x0D) || (c >= 0x1C && c <= 0x20); }
 bool isAsciiNameStart(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
 }
@@ -27,6 +29,7 @@ class Lexer {
   Lexer(std::string_view src, const LexerOptions& options) : src_(src), options_(options) {}
 
   std::vector<Token> run() {
+    out_.reserve(src_.size() / 6 + 16);  // templates run about 8 bytes a token
     while (pos_ < src_.size()) {
       TagStart tag;
       if (!findTag(pos_, tag)) {
@@ -51,6 +54,12 @@ class Lexer {
 
   size_t skipSpace(size_t p) const {
     while (p < src_.size()) {
+      auto byte = static_cast<unsigned char>(src_[p]);
+      if (byte < 0x80) {
+        if (!isAsciiSpace(byte)) break;
+        ++p;
+        continue;
+      }
       size_t next = p;
       if (!unicode::isSpace(unicode::decode(src_, next))) break;
       p = next;
@@ -58,7 +67,14 @@ class Lexer {
     return p;
   }
 
-  bool startsWith(size_t p, std::string_view s) const { return src_.substr(p, s.size()) == s; }
+  // A byte loop: the patterns are two or three characters, shorter than a call to memcmp.
+  bool startsWith(size_t p, std::string_view s) const {
+    if (p > src_.size() || src_.size() - p < s.size()) return false;
+    for (size_t i = 0; i < s.size(); ++i) {
+      if (src_[p + i] != s[i]) return false;
+    }
+    return true;
+  }
 
   // `{%` [-+]? \s* raw \s* (-%}\s* | %}) at p; sets the end of the match.
   bool matchRawBegin(size_t p, char& sign, size_t& end) const {
@@ -135,13 +151,14 @@ class Lexer {
     pos_ = end;
   }
 
+  // The comment ends at the first `#}`, with the `-` or `+` just before it if inside it.
   void lexComment(const TagStart& tag) {
-    for (size_t i = tag.body; i < src_.size(); ++i) {
-      if (startsWith(i, "+#}")) return finish(i + 3);
-      if (startsWith(i, "-#}")) return finish(skipSpace(i + 3));
-      if (startsWith(i, "#}")) return finish(i + 2);
-    }
-    failAt(tag.pos, "missing end of comment tag");
+    size_t end = src_.find("#}", tag.body);
+    if (end == std::string_view::npos) failAt(tag.pos, "missing end of comment tag");
+    char sign = end > tag.body ? src_[end - 1] : 0;
+    if (sign == '+') return finish(end + 2);
+    if (sign == '-') return finish(skipSpace(end + 2));
+    finish(end + 2);
   }
 
   void lexRaw(const TagStart& tag) {
@@ -173,6 +190,8 @@ class Lexer {
 
   // Matches the end of a `{{ }}` or `{% %}` tag at pos_.
   bool matchEnd(bool variable, size_t& end) const {
+    char first = src_[pos_];
+    if (first != '}' && first != '%' && first != '-' && first != '+') return false;
     if (variable) {
       if (startsWith(pos_, "-}}")) return end = skipSpace(pos_ + 3), true;
       if (startsWith(pos_, "}}")) return end = pos_ + 2, true;
@@ -201,9 +220,14 @@ class Lexer {
   }
 
   void lexCodeToken() {
+    auto byte = static_cast<unsigned char>(src_[pos_]);
+    if (isAsciiNameStart(static_cast<char>(byte))) {
+      lexName();
+      return;
+    }
     size_t next = pos_;
-    char32_t cp = unicode::decode(src_, next);
-    if (unicode::isSpace(cp)) {
+    char32_t cp = byte < 0x80 ? byte : unicode::decode(src_, next);
+    if (byte < 0x80 ? isAsciiSpace(byte) : unicode::isSpace(cp)) {
       pos_ = skipSpace(pos_);
       return;
     }
@@ -321,7 +345,16 @@ class Lexer {
     size_t next;
     if (!isNameChar(pos_, next, true)) return false;
     size_t p = next;
-    while (p < src_.size() && isNameChar(p, next, false)) p = next;
+    while (p < src_.size()) {
+      char c = src_[p];
+      if (isAsciiNameStart(c) || isDigit(c)) {
+        ++p;
+      } else if (static_cast<unsigned char>(c) >= 0x80 && isNameChar(p, next, false)) {
+        p = next;
+      } else {
+        break;
+      }
+    }
     emit(Tok::Name, pos_, src_.substr(pos_, p - pos_));
     pos_ = p;
     return true;
@@ -339,27 +372,71 @@ class Lexer {
   }
 
   bool lexOperator() {
-    struct Op {
-      std::string_view text;
-      Tok kind;
+    size_t length = 0;
+    Tok kind = operatorAt(pos_, length);
+    if (length == 0) return false;
+    balanceBracket(src_[pos_]);
+    emit(kind, pos_, src_.substr(pos_, length));
+    pos_ += length;
+    return true;
+  }
+
+  // The operator at p and its length (0 when there is none); two-character ones first.
+  Tok operatorAt(size_t p, size_t& length) const {
+    char second = p + 1 < src_.size() ? src_[p + 1] : 0;
+    auto pair = [&](char want, Tok two, Tok one) {
+      length = second == want ? 2 : 1;
+      return second == want ? two : one;
     };
-    static constexpr Op kOps[] = {
-        {"**", Tok::Pow},     {"//", Tok::FloorDiv}, {"==", Tok::Eq},    {"!=", Tok::Ne},
-        {">=", Tok::Ge},      {"<=", Tok::Le},       {"+", Tok::Add},    {"-", Tok::Sub},
-        {"/", Tok::Div},      {"*", Tok::Mul},       {"%", Tok::Mod},    {"~", Tok::Tilde},
-        {"[", Tok::LBracket}, {"]", Tok::RBracket},  {"(", Tok::LParen}, {")", Tok::RParen},
-        {"{", Tok::LBrace},   {"}", Tok::RBrace},    {">", Tok::Gt},     {"<", Tok::Lt},
-        {"=", Tok::Assign},   {".", Tok::Dot},       {":", Tok::Colon},  {"|", Tok::Pipe},
-        {",", Tok::Comma},    {";", Tok::Semicolon},
-    };
-    for (const Op& op : kOps) {
-      if (!startsWith(pos_, op.text)) continue;
-      balanceBracket(op.text[0]);
-      emit(op.kind, pos_, src_.substr(pos_, op.text.size()));
-      pos_ += op.text.size();
-      return true;
+    length = 1;
+    switch (src_[p]) {
+      case '*':
+        return pair('*', Tok::Pow, Tok::Mul);
+      case '/':
+        return pair('/', Tok::FloorDiv, Tok::Div);
+      case '=':
+        return pair('=', Tok::Eq, Tok::Assign);
+      case '>':
+        return pair('=', Tok::Ge, Tok::Gt);
+      case '<':
+        return pair('=', Tok::Le, Tok::Lt);
+      case '!':
+        length = second == '=' ? 2 : 0;
+        return Tok::Ne;
+      case '+':
+        return Tok::Add;
+      case '-':
+        return Tok::Sub;
+      case '%':
+        return Tok::Mod;
+      case '~':
+        return Tok::Tilde;
+      case '[':
+        return Tok::LBracket;
+      case ']':
+        return Tok::RBracket;
+      case '(':
+        return Tok::LParen;
+      case ')':
+        return Tok::RParen;
+      case '{':
+        return Tok::LBrace;
+      case '}':
+        return Tok::RBrace;
+      case '.':
+        return Tok::Dot;
+      case ':':
+        return Tok::Colon;
+      case '|':
+        return Tok::Pipe;
+      case ',':
+        return Tok::Comma;
+      case ';':
+        return Tok::Semicolon;
+      default:
+        length = 0;
+        return Tok::Eof;
     }
-    return false;
   }
 
   void balanceBracket(char c) {
@@ -389,14 +466,14 @@ class Lexer {
 std::string normalizeSource(std::string_view source) {
   std::string out;
   out.reserve(source.size());
-  for (size_t i = 0; i < source.size(); ++i) {
-    if (source[i] == '\r') {
-      out.push_back('\n');
-      if (i + 1 < source.size() && source[i + 1] == '\n') ++i;
-    } else {
-      out.push_back(source[i]);
-    }
+  // Copies the runs between carriage returns whole (templates rarely have any).
+  size_t from = 0;
+  for (size_t cr = source.find('\r'); cr != std::string_view::npos; cr = source.find('\r', from)) {
+    out.append(source.substr(from, cr - from));
+    out.push_back('\n');
+    from = cr + 1 < source.size() && source[cr + 1] == '\n' ? cr + 2 : cr + 1;
   }
+  out.append(source.substr(from));
   if (!out.empty() && out.back() == '\n') out.pop_back();
   return out;
 }

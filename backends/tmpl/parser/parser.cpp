@@ -26,8 +26,8 @@ std::string joinQuoted(const std::vector<std::string_view>& names) {
 }  // namespace
 
 ParsedTemplate parseTemplate(std::string_view source, const std::vector<Token>& tokens,
-                             const Registry& registry, Arena& arena) {
-  return Parser(source, tokens, registry, arena).parse();
+                             const Registry& registry, Arena& arena, bool defer_macros) {
+  return Parser(source, tokens, registry, arena, defer_macros).parse();
 }
 
 // template := body
@@ -365,6 +365,7 @@ Stmt* Parser::parseMacro() {
   auto* node = arena_.make<MacroStmt>(StmtKind::Macro, next().pos);
   node->target = parseTargetName();
   node->name = node->target->name;
+  if (deferMacro(node)) return node;
   parseSignature(node);
   node->body = parseStatements({"endmacro"}, EndTag::Consume);
   return node;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,12 +15,23 @@
 
 namespace smachac::tmpl {
 
+/// A top-level macro whose signature and body are parsed on its first call
+/// (deferred_macro.cpp): where its signature's tokens start, and the names of the root scope
+/// its body will see (scope.h).
+struct DeferredMacro {
+  MacroStmt* macro;
+  size_t first_token;
+  std::vector<const std::string*> root_refs;
+  std::vector<const std::string*> root_stores;
+};
+
 /// What parsing one template produces.
 struct ParsedTemplate {
   Body body;
   std::vector<BlockStmt*> blocks;                            // every block, in document order
   std::vector<std::pair<std::string, uint32_t>> references;  // literal names of extends etc.
   bool has_extends = false;
+  std::vector<DeferredMacro> deferred;  // macros whose signature and body wait for a call
 };
 
 /// How parseTuple reads `a, b, c` (Jinja2's Parser.parse_tuple; the defaults are Jinja's).
@@ -48,17 +60,25 @@ enum class UnaryFilters { Parse, Leave };
 /// Whether parseFilterChain starts at a `|` or, in `{% filter name %}`, at the filter name.
 enum class FilterStart { AtPipe, AtName };
 
-/// Parses `tokens` (of `source`); raises SyntaxFault.
+/// Parses `tokens` (of `source`); raises SyntaxFault. With `defer_macros`, the top-level
+/// macros that can wait are left unparsed (ParsedTemplate::deferred).
 ParsedTemplate parseTemplate(std::string_view source, const std::vector<Token>& tokens,
-                             const Registry& registry, Arena& arena);
+                             const Registry& registry, Arena& arena, bool defer_macros = false);
 
 class Parser {
  public:
   Parser(std::string_view source, const std::vector<Token>& tokens, const Registry& registry,
-         Arena& arena)
-      : source_(source), tokens_(tokens), registry_(registry), arena_(arena) {}
+         Arena& arena, bool defer_macros = false)
+      : source_(source),
+        tokens_(tokens),
+        registry_(registry),
+        arena_(arena),
+        defer_macros_(defer_macros) {}
 
   ParsedTemplate parse();
+  /// Fills the signature and body of a deferred macro, as the whole template's parse would
+  /// have.
+  void parseDeferredMacro(const DeferredMacro& deferred);
 
   // Expressions (parser_expr.cpp).
   /// `with_cond_expr` false: an `or` expression, where `if` ends it (tuples of a `for`).
@@ -102,6 +122,9 @@ class Parser {
   Stmt* parsePrint();
   Stmt* parseDo();
   void parseSignature(MacroStmt* macro);
+  bool deferMacro(MacroStmt* macro);
+  std::optional<size_t> deferrableBodyEnd(size_t first) const;
+  bool knownFilterOrTestAt(size_t index) const;
   bool parseContextFlag(bool& with_context);
   Expr* parseTemplateName();
   [[noreturn]] void failUnknownTag(const Token& token);
@@ -142,6 +165,7 @@ class Parser {
   const std::vector<Token>& tokens_;
   const Registry& registry_;
   Arena& arena_;
+  bool defer_macros_;
   size_t index_ = 0;
   int nesting_ = 0;
   std::vector<OpenTag> tag_stack_;

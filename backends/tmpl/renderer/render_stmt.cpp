@@ -119,12 +119,14 @@ void execFromImport(Exec& ex, Site& site, const FromImportStmt& s) {
   Value module = importModule(ex, site, s.template_name, s.loaded, s.with_context, s.locals);
   auto* m = static_cast<const ModuleObject*>(module.object());
   for (const ImportedName& n : s.names) {
-    Value v;
-    if (!m->getExport(n.name, v)) {
-      v = Value::undefinedHint("the template `" + m->tmpl()->name() + "` does not export `" +
-                               *n.name + "`");
+    if (const Value* v = m->findExport(n.name, n.export_hint)) {
+      storeImported(site, n.alias, *v, s.toplevel);
+      continue;
     }
-    storeImported(site, n.alias, v, s.toplevel);
+    storeImported(site, n.alias,
+                  Value::undefinedHint("the template `" + m->tmpl()->name() +
+                                       "` does not export `" + *n.name + "`"),
+                  s.toplevel);
   }
 }
 

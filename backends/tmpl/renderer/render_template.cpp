@@ -234,6 +234,7 @@ class MacroBinder {
 
 void MacroObject::callInto(Exec& ex, const CallArgs& args, std::string& out) const {
   CallGuard guard(ex, tmpl_);
+  if (node_->deferred) tmpl_->completeMacro(*node_);
   FrameHolder frame(ex, closure_.get(), &closure_->context(), node_->frame);
   initFrame(*frame, node_->frame, ex.registry);
   MacroBinder(*node_, args).bind(ex, *frame);

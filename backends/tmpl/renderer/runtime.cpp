@@ -29,12 +29,15 @@ bool SkipPolicy::skipsEnclosing(const BlockStmt& block) const {
 }
 
 const Value* Context::find(const std::string* name, size_t hash) const {
+  uint64_t bit = nameBit(name);
   for (const Context* c = this; c; c = c->outer_.get()) {
-    for (const auto& [n, v] : c->vars_) {
-      if (n == name) return &v;
-    }
-    for (const auto& [n, v] : c->locals_) {
-      if (n == name) return &v;
+    if (c->names_ & bit) {
+      for (const auto& [n, v] : c->vars_) {
+        if (n == name) return &v;
+      }
+      for (const auto& [n, v] : c->locals_) {
+        if (n == name) return &v;
+      }
     }
     if (c->parent_.isDict()) {
       if (const Value* v = c->parent_.dict().findString(*name, hash)) return v;
@@ -50,6 +53,7 @@ Value Context::resolve(const std::string* name, size_t hash, const Registry& reg
 }
 
 void Context::clear() {
+  names_ = 0;
   parent_ = Value();
   outer_ = nullptr;
   locals_.clear();
@@ -59,12 +63,16 @@ void Context::clear() {
 }
 
 void Context::setVar(const std::string* name, const Value& value) {
-  for (auto& [n, v] : vars_) {
-    if (n == name) {
-      v = value;
-      return;
+  uint64_t bit = nameBit(name);
+  if (names_ & bit) {
+    for (auto& [n, v] : vars_) {
+      if (n == name) {
+        v = value;
+        return;
+      }
     }
   }
+  names_ |= bit;
   vars_.emplace_back(name, value);
 }
 
@@ -253,14 +261,15 @@ bool ModuleObject::getAttr(std::string_view name, Value& out) const {
   return false;
 }
 
-bool ModuleObject::getExport(const std::string* name, Value& out) const {
-  for (const auto& [n, v] : exports_) {
-    if (n == name) {
-      out = v;
-      return true;
+const Value* ModuleObject::findExport(const std::string* name, size_t& hint) const {
+  if (hint < exports_.size() && exports_[hint].first == name) return &exports_[hint].second;
+  for (size_t i = 0; i < exports_.size(); ++i) {
+    if (exports_[i].first == name) {
+      hint = i;
+      return &exports_[i].second;
     }
   }
-  return false;
+  return nullptr;
 }
 
 void MethodObject::repr(std::string& out) const {

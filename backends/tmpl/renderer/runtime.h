@@ -52,7 +52,10 @@ class Context final : public Object {
   /// variables, or the includer's context plus the locals visible at the include.
   void setParent(Value parent) { parent_ = std::move(parent); }
   void setOuter(Ref<Context> outer) { outer_ = std::move(outer); }
-  void addLocal(const std::string* name, const Value& value) { locals_.emplace_back(name, value); }
+  void addLocal(const std::string* name, const Value& value) {
+    locals_.emplace_back(name, value);
+    names_ |= nameBit(name);
+  }
 
   /// Template-level variables, then the parent's, then globals; `missing` otherwise.
   Value resolve(const std::string* name, size_t hash, const Registry& registry) const;
@@ -69,7 +72,14 @@ class Context final : public Object {
 
  private:
   const Value* find(const std::string* name, size_t hash) const;
+  /// One bit per interned name (by address): `names_` has the bits of every name in `vars_`
+  /// and `locals_`, so most lookups of a name that is not there skip both scans.
+  static uint64_t nameBit(const std::string* name) {
+    auto address = reinterpret_cast<uintptr_t>(name);
+    return uint64_t{1} << ((address >> 4 ^ address >> 10) & 63);
+  }
 
+  uint64_t names_ = 0;
   Value parent_;
   Ref<Context> outer_;
   std::vector<std::pair<const std::string*, Value>> locals_;
@@ -256,8 +266,9 @@ class ModuleObject final : public Object {
   void repr(std::string& out) const override;
   void str(std::string& out) const override { out += body_; }
   bool getAttr(std::string_view name, Value& out) const override;
-  /// getAttr for an interned name.
-  bool getExport(const std::string* name, Value& out) const;
+  /// The export `name` (interned) or nullptr; `hint` is where to look first, and is set to
+  /// where the name was found.
+  const Value* findExport(const std::string* name, size_t& hint) const;
   const std::string& body() const { return body_; }
   const Template* tmpl() const { return tmpl_; }
   const std::vector<std::pair<const std::string*, Value>>& exports() const { return exports_; }

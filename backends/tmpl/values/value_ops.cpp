@@ -152,9 +152,13 @@ Value repeat(const Value& seq, int64_t times) {
   if (times < 0) times = 0;
   if (seq.isString()) {
     checkSize(seq.s().size() * static_cast<size_t>(times), "string");
+    const std::string& text = seq.s();
+    if (text.size() == 1) {  // `' ' * indent`, the common case: one fill
+      return Value::string(std::string(static_cast<size_t>(times), text[0]), seq.isMarkup());
+    }
     std::string out;
-    out.reserve(seq.s().size() * static_cast<size_t>(times));
-    for (int64_t i = 0; i < times; ++i) out += seq.s();
+    out.reserve(text.size() * static_cast<size_t>(times));
+    for (int64_t i = 0; i < times; ++i) out += text;
     return Value::string(std::move(out), seq.isMarkup());
   }
   const auto& items = seq.list().items();

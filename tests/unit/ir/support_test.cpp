@@ -26,6 +26,19 @@ TEST_CASE("utf-8 validation") {
   CHECK(smachac::findInvalidUtf8("\xc0\xaf") == 0u);       // overlong
   CHECK(smachac::findInvalidUtf8("x\xed\xa0\x80") == 1u);  // surrogate
   CHECK(smachac::findInvalidUtf8("\xe2\x82") == 0u);       // truncated
+  // Past and inside the 64-byte chunks that are checked at once.
+  std::string ascii(200, 'a');
+  CHECK_FALSE(smachac::findInvalidUtf8(ascii).has_value());
+  for (size_t at : {0u, 63u, 64u, 130u, 199u}) {
+    std::string bad = ascii;
+    bad[at] = '\0';
+    CHECK(smachac::findInvalidUtf8(bad) == at);
+    bad[at] = '\x80';
+    CHECK(smachac::findInvalidUtf8(bad) == at);
+    bad[at] = '\x7f';
+    CHECK_FALSE(smachac::findInvalidUtf8(bad).has_value());
+  }
+  CHECK_FALSE(smachac::findInvalidUtf8(std::string(70, 'a') + "\xc3\xa9" + ascii).has_value());
 }
 
 TEST_CASE("source lines and offsets") {

@@ -78,6 +78,32 @@ Value replaceFilter(Exec&, const Value& in, Args args) {
   return Value::string(replaceString(str(in), str(b.require(0)), str(b.require(1)), count));
 }
 
+// Jinja2's indent: the lines of `input + "\n"` (so that a final line break is kept) joined by
+// "\n" and the indention (not before empty lines unless `blank`). The lines are walked in
+// `input` itself: the added "\n" ends the last line, or after a final line break that is not
+// a lone "\r" (with which it would form one "\r\n") it adds an empty line.
+std::string indentLines(std::string_view input, std::string_view indention, bool first,
+                        bool blank) {
+  std::string out;
+  size_t breaks = static_cast<size_t>(std::count(input.begin(), input.end(), '\n'));
+  out.reserve(input.size() + (breaks + 2) * indention.size());  // exact but for rarer breaks
+  if (first) out += indention;
+  LineCursor cursor(input, false);
+  bool first_line = true;
+  auto add = [&](std::string_view line) {
+    if (!first_line) {
+      out += '\n';
+      if (blank || !line.empty()) out += indention;
+    }
+    first_line = false;
+    out += line;
+    checkSize(out.size(), "string");
+  };
+  for (std::string_view line; cursor.next(line);) add(line);
+  if (cursor.endedWithBreak() && input.back() != '\r') add({});
+  return out;
+}
+
 Value indentFilter(Exec&, const Value& in, Args args) {
   ArgBinder b(args, "indent", {"width", "first", "blank"});
   std::string indention;
@@ -99,19 +125,7 @@ Value indentFilter(Exec&, const Value& in, Args args) {
   if (!mayHaveLineBreak(input)) {  // one line: only `first` changes it
     return first && !indention.empty() ? Value::string(indention + input, in.isMarkup()) : in;
   }
-  std::string text = input + "\n";  // as Jinja does, so that a final line break is kept
-  std::vector<std::string_view> lines = lineViews(text, false);
-  bool blank = b.getBool(2, false);
-  std::string out;
-  out.reserve(text.size() + lines.size() * indention.size());
-  for (size_t i = 0; i < lines.size(); ++i) {
-    if (i > 0) out += '\n';
-    if (i > 0 && (blank || !lines[i].empty())) out += indention;
-    out += lines[i];
-    checkSize(out.size(), "string");
-  }
-  if (first) out = indention + out;
-  return Value::string(std::move(out), in.isMarkup());
+  return Value::string(indentLines(input, indention, first, b.getBool(2, false)), in.isMarkup());
 }
 
 Value centerFilter(Exec&, const Value& in, Args args) {

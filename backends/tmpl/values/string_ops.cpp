@@ -277,26 +277,33 @@ size_t breakLength(std::string_view s, size_t i) {
 
 }  // namespace
 
-std::vector<std::string_view> lineViews(std::string_view s, bool keepends) {
-  std::vector<std::string_view> lines;
-  size_t start = 0;
-  size_t i = 0;
-  while (i < s.size()) {
-    if (s.size() - i >= 8 && plainWord(s.data() + i)) {  // most of a line: 8 bytes a step
+bool LineCursor::next(std::string_view& line) {
+  size_t i = start_;
+  while (i < s_.size()) {
+    if (s_.size() - i >= 8 && plainWord(s_.data() + i)) {  // most of a line: 8 bytes a step
       i += 8;
       continue;
     }
-    for (size_t stop = std::min(s.size(), i + 8); i < stop; ++i) {
+    for (size_t stop = std::min(s_.size(), i + 8); i < stop; ++i) {
       size_t length =
-          kLineBreakLeads.table[static_cast<unsigned char>(s[i])] ? breakLength(s, i) : 0;
+          kLineBreakLeads.table[static_cast<unsigned char>(s_[i])] ? breakLength(s_, i) : 0;
       if (length == 0) continue;
-      lines.push_back(s.substr(start, (keepends ? i + length : i) - start));
-      start = i + length;
-      i = start;
-      break;
+      line = s_.substr(start_, (keepends_ ? i + length : i) - start_);
+      start_ = i + length;
+      ended_with_break_ = start_ == s_.size();
+      return true;
     }
   }
-  if (start < s.size()) lines.push_back(s.substr(start));
+  if (start_ >= s_.size()) return false;
+  line = s_.substr(start_);
+  start_ = s_.size();
+  return true;
+}
+
+std::vector<std::string_view> lineViews(std::string_view s, bool keepends) {
+  std::vector<std::string_view> lines;
+  LineCursor cursor(s, keepends);
+  for (std::string_view line; cursor.next(line);) lines.push_back(line);
   return lines;
 }
 

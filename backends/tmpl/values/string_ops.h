@@ -23,6 +23,23 @@ std::vector<std::string> splitString(std::string_view s, const std::string* sep,
 std::vector<std::string> splitLines(std::string_view s, bool keepends);
 /// str.splitlines(keepends) as views into `s`.
 std::vector<std::string_view> lineViews(std::string_view s, bool keepends);
+
+/// str.splitlines(keepends) one line at a time, as views into the text (lineViews without
+/// holding every line at once).
+class LineCursor {
+ public:
+  LineCursor(std::string_view s, bool keepends) : s_(s), keepends_(keepends) {}
+  /// The next line, or false when there is none left.
+  bool next(std::string_view& line);
+  /// After the last line: whether a line break ended the text.
+  bool endedWithBreak() const { return ended_with_break_; }
+
+ private:
+  std::string_view s_;
+  bool keepends_;
+  size_t start_ = 0;
+  bool ended_with_break_ = false;
+};
 /// False when `s` certainly has a single line (no byte that can start a line break).
 bool mayHaveLineBreak(std::string_view s);
 /// str.strip(chars): whitespace when `chars` is null.

@@ -63,3 +63,21 @@ TEST_CASE("indent finds every kind of line break, in long plain runs and across 
   CHECK(env->render("t", ctx) ==
         "abcdefgh1234567\n  abcdefghijklmnop\n  xy\n  abcdefghi\n  j\n\n  last line here!");
 }
+
+TEST_CASE("indent of a text that ends with a line break adds Jinja2's empty last line") {
+  auto indented = [](const std::string& s) {
+    Value ctx = Value::newDict();
+    ctx.dict().setString("s", Value::string(s));
+    auto env = makeEnv({{"t", "{{ s | indent(2) }}|{{ s | indent(2, true, true) }}"}});
+    return env->render("t", ctx);
+  };
+  // Expected texts from python3-jinja2 3.1.
+  CHECK(indented("a\r") == "a|  a");  // "\r" and the added "\n" are one break
+  CHECK(indented("a\r\n") == "a\n|  a\n  ");
+  CHECK(indented("a\n") == "a\n|  a\n  ");
+  CHECK(indented("a\u0085") == "a\n|  a\n  ");
+  CHECK(indented("a\u2028") == "a\n|  a\n  ");
+  CHECK(indented("\r") == "|  ");
+  CHECK(indented("\n\n") == "\n\n|  \n  \n  ");
+  CHECK(indented("a\n\rb\r") == "a\n\n  b|  a\n  \n  b");
+}

@@ -113,7 +113,7 @@ def run_flexbe(tools, name, script, preempt_after=None):
                                           os.path.join(tools.work_dir, "flexbe", name))
     except flexbe_package.GenerateError as error:
         return Run(problem="smachac: " + first_error(str(error)))
-    env = dict(tools.session.env)
+    env = tools.session.namespaced_env()  # the cases run two at a time
     for variable in ("PYTHONPATH", "ROS_PACKAGE_PATH"):
         env[variable] = package.workspace + os.pathsep + env[variable]
     argv = [PYTHON, os.path.join(ROS_DIR, "run_flexbe.py"), package.top[0],

@@ -10,7 +10,9 @@ with every state entered exited once (state packages a case's templates import, 
 import_clash's my_flexbe_states, are in GOLDEN_DIR/inputs, on PYTHONPATH). `# EXECUTE: no
 (<why>)` skips a case and says why. The runs of EXTRA_RUNS then check what a case's defaults
 do not show: an overridden behavior parameter reaching its state, and an autonomy level making
-FlexBE ask the operator. The ROS 2 output is not executed (Debian 12 has no rclpy); the golden
+FlexBE ask the operator. All of it runs beside a bystander (fixtures/stray_flexbe_commands.py)
+that keeps FlexBE's preempt command latched on the master's root namespace: runs share one
+master, two at a time, and none may hear another's commands. The ROS 2 output is not executed (Debian 12 has no rclpy); the golden
 tests check it structurally.
 
 Prints one line per run (`ok`, `FAIL` with the reason, `skip` with why) and
@@ -22,6 +24,7 @@ import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+STRAY_COMMANDS = os.path.join(HERE, "fixtures", "stray_flexbe_commands.py")
 ROS_TOOLS = os.path.join(os.path.dirname(os.path.dirname(HERE)), "tools", "ros")
 sys.path.insert(0, ROS_TOOLS)
 
@@ -141,7 +144,7 @@ class Run:
         self.outcome, self.check = outcome, check
 
     def start(self, ros):
-        env = dict(ros.env)
+        env = ros.namespaced_env()  # PARALLEL_RUNS at a time
         for variable in ("PYTHONPATH", "ROS_PACKAGE_PATH"):
             env[variable] = self.package.workspace + os.pathsep + env[variable]
         env["PYTHONPATH"] += os.pathsep + self.package.inputs  # the cases' own state packages
@@ -197,6 +200,7 @@ def planned_runs(smachac, golden_dir, work, report):
 
 def run_all(ros, smachac, golden_dir, work, report):
     runs = planned_runs(smachac, golden_dir, work, report)
+    ros.start_fixture("stray_flexbe_commands", [PYTHON, STRAY_COMMANDS])
     with concurrent.futures.ThreadPoolExecutor(PARALLEL_RUNS) as pool:
         for run, finished in zip(runs, pool.map(lambda r: r.start(ros), runs)):
             run.report(finished, report)

@@ -11,6 +11,7 @@ The master is `rosmaster --core` on 127.0.0.1 and a free port (roscore would als
 rosout that listens on every interface); every node binds 127.0.0.1 through ROS_IP, and
 ROS_HOME / ROS_LOG_DIR are in the work folder. /run_id is set as roscore would.
 """
+import itertools
 import json
 import os
 import socket
@@ -51,6 +52,7 @@ class RosSession:
         self.env = self._environment()
         self.processes = Processes()
         self.master_uri = None
+        self._namespaces = itertools.count(1)
 
     @staticmethod
     def _read_overlay(overlay_dir):
@@ -92,6 +94,12 @@ class RosSession:
         why = self.overlay["frameworks"].get(framework, "unknown framework " + framework)
         if why is not None:
             raise Unavailable(why)
+
+    def namespaced_env(self):
+        """A copy of the environment whose nodes live in a namespace no other run of this
+        session has: for programs that share the master at the same time and must not hear
+        each other on their relative topics."""
+        return dict(self.env, ROS_NAMESPACE="/smachac_run_%d" % next(self._namespaces))
 
     def add_python_path(self, folder):
         self.env["PYTHONPATH"] = folder + os.pathsep + self.env["PYTHONPATH"]

@@ -32,6 +32,11 @@ headless, that is reported as an error (exit 1) instead of waiting for ever.
 With --preempt-after, FlexBE's preempt command (an Empty message on flexbe/command/preempt,
 which every FlexBE state machine listens to) is published that many seconds after the
 behavior starts; SIGUSR1 publishes it at any time.
+
+FlexBE names its topics (commands, the operator's mirror, the log) relative to the node's
+namespace. Runs that share a master at the same time must each get a namespace of their own
+(ROS_NAMESPACE; RosSession.namespaced_env gives one), or each hears the others' commands: a
+preempt, published latched, would end every run that starts while its publisher lives.
 """
 import argparse
 import json

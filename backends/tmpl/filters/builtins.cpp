@@ -40,9 +40,9 @@ std::vector<std::string_view> Registry::testNames() const {
   return out;
 }
 
-void Registry::addFilter(std::string name, FilterFn fn) {
+void Registry::addFilter(std::string name, FilterFn fn, FilterIntoFn into) {
   FilterDef& def = filters_[name];
-  def = FilterDef{name, fn, {}};
+  def = FilterDef{name, fn, {}, into};
 }
 
 void Registry::addTest(std::string name, TestFn fn) {
@@ -52,7 +52,7 @@ void Registry::addTest(std::string name, TestFn fn) {
 
 void Registry::addFilter(std::string name, CustomFilter fn) {
   FilterDef& def = filters_[name];
-  def = FilterDef{name, nullptr, std::move(fn)};
+  def = FilterDef{name, nullptr, std::move(fn), nullptr};
 }
 
 void Registry::addTest(std::string name, CustomTest fn) {

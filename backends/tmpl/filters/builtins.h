@@ -15,6 +15,10 @@
 namespace smachac::tmpl {
 
 using FilterFn = Value (*)(Exec& ex, const Value& input, const CallArgs& args);
+/// A filter's result appended straight to `out` (what `{{ x | f }}` prints), with the same
+/// result and errors as its FilterFn; false when it leaves this input to the FilterFn.
+using FilterIntoFn = bool (*)(Exec& ex, const Value& input, const CallArgs& args,
+                              std::string& out);
 using TestFn = bool (*)(Exec& ex, const Value& input, const CallArgs& args);
 using CustomFilter = std::function<Value(const Value& input, const CallArgs& args)>;
 using CustomTest = std::function<bool(const Value& input, const CallArgs& args)>;
@@ -23,6 +27,7 @@ struct FilterDef {
   std::string name;
   FilterFn fn = nullptr;
   CustomFilter custom;
+  FilterIntoFn into = nullptr;  ///< optional, built-in filters only
 };
 
 struct TestDef {
@@ -40,7 +45,7 @@ class Registry {
   std::vector<std::string_view> filterNames() const;
   std::vector<std::string_view> testNames() const;
 
-  void addFilter(std::string name, FilterFn fn);
+  void addFilter(std::string name, FilterFn fn, FilterIntoFn into = nullptr);
   void addTest(std::string name, TestFn fn);
   void addFilter(std::string name, CustomFilter fn);
   void addTest(std::string name, CustomTest fn);

@@ -5,6 +5,7 @@
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/filters/builtins.h"
 #include "backends/tmpl/filters/text_wrap.h"
+#include "backends/tmpl/limits.h"
 #include "backends/tmpl/values/py_format.h"
 #include "backends/tmpl/values/string_ops.h"
 #include "backends/tmpl/values/value_ops.h"
@@ -78,15 +79,14 @@ Value replaceFilter(Exec&, const Value& in, Args args) {
   return Value::string(replaceString(str(in), str(b.require(0)), str(b.require(1)), count));
 }
 
-// Jinja2's indent: the lines of `input + "\n"` (so that a final line break is kept) joined by
-// "\n" and the indention (not before empty lines unless `blank`). The lines are walked in
-// `input` itself: the added "\n" ends the last line, or after a final line break that is not
-// a lone "\r" (with which it would form one "\r\n") it adds an empty line.
-std::string indentLines(std::string_view input, std::string_view indention, bool first,
-                        bool blank) {
-  std::string out;
-  size_t breaks = static_cast<size_t>(std::count(input.begin(), input.end(), '\n'));
-  out.reserve(input.size() + (breaks + 2) * indention.size());  // exact but for rarer breaks
+// Jinja2's indent appended to `out`: the lines of `input + "\n"` (so that a final line break
+// is kept) joined by "\n" and the indention (not before empty lines unless `blank`). The
+// lines are walked in `input` itself: the added "\n" ends the last line, or after a final
+// line break that is not a lone "\r" (with which it would form one "\r\n") it adds an empty
+// line. The result, counted from where it starts in `out`, is a string within the limits.
+void appendIndented(std::string& out, std::string_view input, std::string_view indention,
+                    bool first, bool blank) {
+  size_t start = out.size();
   if (first) out += indention;
   LineCursor cursor(input, false);
   bool first_line = true;
@@ -97,35 +97,70 @@ std::string indentLines(std::string_view input, std::string_view indention, bool
     }
     first_line = false;
     out += line;
-    checkSize(out.size(), "string");
+    checkSize(out.size() - start, "string");
   };
   for (std::string_view line; cursor.next(line);) add(line);
   if (cursor.endedWithBreak() && input.back() != '\r') add({});
-  return out;
 }
 
-Value indentFilter(Exec&, const Value& in, Args args) {
-  ArgBinder b(args, "indent", {"width", "first", "blank"});
+// The size of the result (exact but for the rarer line breaks than "\n").
+size_t indentedSize(std::string_view input, std::string_view indention) {
+  size_t breaks = static_cast<size_t>(std::count(input.begin(), input.end(), '\n'));
+  return input.size() + (breaks + 2) * indention.size();
+}
+
+// indent's arguments; with a string input, which `indent` needs.
+struct IndentCall {
   std::string indention;
+  bool first = false;
+  bool blank = false;
+};
+
+IndentCall bindIndent(const Value& in, Args args) {
+  ArgBinder b(args, "indent", {"width", "first", "blank"});
+  IndentCall call;
   if (b.has(0) && b.get(0)->isString()) {
-    indention = b.get(0)->s();
+    call.indention = b.get(0)->s();
   } else {
     int64_t width = b.getInt(0, 4);
     if (width > 0) {
       checkSize(static_cast<size_t>(width), "string");
-      indention.assign(static_cast<size_t>(width), ' ');
+      call.indention.assign(static_cast<size_t>(width), ' ');
     }
   }
   if (!in.isString()) {
     if (in.isUndefined()) fail(in.undefinedMessage());
     fail("`indent` expects a string, not `" + std::string(typeName(in)) + "`");
   }
-  bool first = b.getBool(1, false);
+  call.first = b.getBool(1, false);
+  call.blank = b.getBool(2, false);
+  return call;
+}
+
+Value indentFilter(Exec&, const Value& in, Args args) {
+  IndentCall call = bindIndent(in, args);
   const std::string& input = in.s();
   if (!mayHaveLineBreak(input)) {  // one line: only `first` changes it
-    return first && !indention.empty() ? Value::string(indention + input, in.isMarkup()) : in;
+    return call.first && !call.indention.empty()
+               ? Value::string(call.indention + input, in.isMarkup())
+               : in;
   }
-  return Value::string(indentLines(input, indention, first, b.getBool(2, false)), in.isMarkup());
+  std::string out;
+  out.reserve(indentedSize(input, call.indention));
+  appendIndented(out, input, call.indention, call.first, call.blank);
+  return Value::string(std::move(out), in.isMarkup());
+}
+
+// `{{ text | indent(n) }}` with more than one line: written straight into the output, without
+// the indented copy beside it (on a large generated body, the copy is the render's peak).
+bool indentInto(Exec&, const Value& in, Args args, std::string& out) {
+  IndentCall call = bindIndent(in, args);
+  if (!mayHaveLineBreak(in.s())) return false;
+  size_t start = out.size();
+  reserveToAppend(out, indentedSize(in.s(), call.indention));
+  appendIndented(out, in.s(), call.indention, call.first, call.blank);
+  chargeWork(out.size() - start);  // what the string value would have been charged
+  return true;
 }
 
 Value centerFilter(Exec&, const Value& in, Args args) {
@@ -235,7 +270,7 @@ void registerStringFilters(Registry& r) {
   r.addFilter("title", titleFilter);
   r.addFilter("trim", trimFilter);
   r.addFilter("replace", replaceFilter);
-  r.addFilter("indent", indentFilter);
+  r.addFilter("indent", indentFilter, indentInto);
   r.addFilter("center", centerFilter);
   r.addFilter("wordwrap", wordwrapFilter);
   r.addFilter("wordcount", wordcountFilter);

@@ -3,17 +3,21 @@
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/limits.h"
 #include "backends/tmpl/renderer/render.h"
+#include "backends/tmpl/values/string_ops.h"
 #include "backends/tmpl/values/value_ops.h"
 #include "backends/tmpl/values/value_print.h"
 
 namespace smachac::tmpl {
 namespace {
 
-void write(Site& site, std::string_view text) {
+void checkOutputSize(size_t size) {
   size_t limit = activeLimits().string_bytes;
-  if (site.out->size() + text.size() > limit) {
-    fail("output too large (limit " + std::to_string(limit) + " bytes)");
-  }
+  if (size > limit) fail("output too large (limit " + std::to_string(limit) + " bytes)");
+}
+
+void write(Site& site, std::string_view text) {
+  checkOutputSize(site.out->size() + text.size());
+  reserveToAppend(*site.out, text.size());
   site.out->append(text);
 }
 
@@ -200,8 +204,30 @@ void execMacroDef(Exec& ex, Site& site, const MacroStmt& s) {
   storeName(site, s.target, macro, s.toplevel);
 }
 
-// `{{ expr }}`; a macro called for printing renders straight into the output.
+// `{{ x | f(...) }}` with a filter that can write its result into the output itself.
+void printFiltered(Exec& ex, Site& site, const FilterExpr* filter) {
+  Value input = eval(ex, site, filter->input);
+  OwnedArgs args;
+  evalArgs(ex, site, filter->args, args);
+  Value result;
+  bool written = false;
+  try {
+    written = filter->def->into(ex, input, args.view(), *site.out);
+    if (!written) result = applyFilter(ex, *filter->def, input, args.view());
+  } catch (const Fault& fault) {
+    throw ex.tmpl->error(filter->pos, fault.message());
+  }
+  if (!written) return writeValue(site, result);
+  checkOutputSize(site.out->size());
+}
+
+// `{{ expr }}`; a macro called for printing renders straight into the output, and so does a
+// filter that can.
 void execPrint(Exec& ex, Site& site, const Expr* expr) {
+  if (expr->kind == ExprKind::Filter) {
+    auto* filter = static_cast<const FilterExpr*>(expr);
+    if (filter->input && filter->def->into) return printFiltered(ex, site, filter);
+  }
   if (expr->kind == ExprKind::Call) {
     auto* call = static_cast<const CallExpr*>(expr);
     if (call->callee->kind == ExprKind::Name) {

@@ -40,6 +40,10 @@ class LineCursor {
   size_t start_ = 0;
   bool ended_with_break_ = false;
 };
+/// Makes room in `out` for `extra` more bytes. A large addition gets an eighth of headroom
+/// instead of std::string's doubling at the next append: an output that ends in one large
+/// piece (a rendered body and a few lines after it) then holds about its size, not twice it.
+void reserveToAppend(std::string& out, size_t extra);
 /// False when `s` certainly has a single line (no byte that can start a line break).
 bool mayHaveLineBreak(std::string_view s);
 /// str.strip(chars): whitespace when `chars` is null.

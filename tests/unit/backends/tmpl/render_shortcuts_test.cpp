@@ -1,7 +1,12 @@
 // The renderer's shortcuts give what the general paths give: export hints of
-// `from ... import`, the context's name filter, one-line `indent`, one-character repetition
-// and the 8-byte steps of renderBlock's strip and of the line-break scan.
+// `from ... import`, the context's name filter, one-line `indent`, a printed `indent` written
+// straight into the output, one-character repetition and the 8-byte steps of renderBlock's
+// strip and of the line-break scan.
 #include <doctest/doctest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/unit/backends/tmpl/tmpl_test_util.h"
 
@@ -65,11 +70,16 @@ TEST_CASE("indent finds every kind of line break, in long plain runs and across 
 }
 
 TEST_CASE("indent of a text that ends with a line break adds Jinja2's empty last line") {
+  // Printed (written into the output) and as values: the same text.
   auto indented = [](const std::string& s) {
     Value ctx = Value::newDict();
     ctx.dict().setString("s", Value::string(s));
-    auto env = makeEnv({{"t", "{{ s | indent(2) }}|{{ s | indent(2, true, true) }}"}});
-    return env->render("t", ctx);
+    auto env = makeEnv({{"printed", "{{ s | indent(2) }}|{{ s | indent(2, true, true) }}"},
+                        {"values", "{% set a = s | indent(2) %}{% set b = s | indent(2, true, "
+                                   "true) %}{{ a ~ '|' ~ b }}"}});
+    std::string printed = env->render("printed", ctx);
+    CHECK(env->render("values", ctx) == printed);
+    return printed;
   };
   // Expected texts from python3-jinja2 3.1.
   CHECK(indented("a\r") == "a|  a");  // "\r" and the added "\n" are one break
@@ -80,4 +90,35 @@ TEST_CASE("indent of a text that ends with a line break adds Jinja2's empty last
   CHECK(indented("\r") == "|  ");
   CHECK(indented("\n\n") == "\n\n|  \n  \n  ");
   CHECK(indented("a\n\rb\r") == "a\n\n  b|  a\n  \n  b");
+}
+
+TEST_CASE("a printed indent keeps the limits, steps and errors of the indented string") {
+  // Each template printed as written (indent writes into the output) and with `~ ''` after
+  // the filter (the indented string is made, then printed): the same error, at the filter's
+  // name for the filter's errors and at the `{{` for the output's.
+  std::vector<std::pair<std::string, std::string>> cases = {
+      {"{{ 'ab\\nab\\nab' | indent(5)", "t:1:19: string too large (limit 16)"},
+      {"{% for i in range(4) %}{{ 'ab\\nc' | indent(1)",
+       "t:1:24: output too large (limit 16 bytes)"},
+      {"{{ 7 | indent(1)", "t:1:8: `indent` expects a string, not `int`"},
+      {"{{ 'a\\nb' | indent('x', wide=1)",
+       "t:1:13: `indent` got an unexpected keyword argument `wide`"}};
+  Value ctx = Value::newDict();
+  for (const auto& [source, error] : cases) {
+    std::string end = source.find("{% for") == 0 ? " }}{% endfor %}" : " }}";
+    auto env = makeEnv({{"t", source + end}});
+    env->setLimits({.steps = 1000, .string_bytes = 16, .items = 6});
+    CHECK_THROWS_WITH(env->render("t", ctx), error.c_str());
+    auto kept = makeEnv({{"t", source + " ~ ''" + end}});
+    kept->setLimits({.steps = 1000, .string_bytes = 16, .items = 6});
+    CHECK_THROWS_WITH(kept->render("t", ctx), error.c_str());
+  }
+  // 50 steps for s, 75 for its indented text: past 100 whether it is printed or kept.
+  for (std::string after : {"", " ~ ''"}) {
+    auto env = makeEnv({{"t", "{% set s = 'x\\n' * 6400 %}{{ s | indent(1)" + after + " }}"}});
+    env->setLimits({.steps = 100});
+    CHECK_THROWS_WITH(env->render("t", ctx), "t:1:34: template execution exceeded 100 steps");
+    env->setLimits({.steps = 200});
+    CHECK(env->render("t", ctx).size() == 19199);
+  }
 }

@@ -17,8 +17,7 @@ namespace smachac::tmpl {
 using FilterFn = Value (*)(Exec& ex, const Value& input, const CallArgs& args);
 /// A filter's result appended straight to `out` (what `{{ x | f }}` prints), with the same
 /// result and errors as its FilterFn; false when it leaves this input to the FilterFn.
-using FilterIntoFn = bool (*)(Exec& ex, const Value& input, const CallArgs& args,
-                              std::string& out);
+using FilterIntoFn = bool (*)(Exec& ex, const Value& input, const CallArgs& args, std::string& out);
 using TestFn = bool (*)(Exec& ex, const Value& input, const CallArgs& args);
 using CustomFilter = std::function<Value(const Value& input, const CallArgs& args)>;
 using CustomTest = std::function<bool(const Value& input, const CallArgs& args)>;

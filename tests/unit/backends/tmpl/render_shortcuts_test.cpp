@@ -75,8 +75,9 @@ TEST_CASE("indent of a text that ends with a line break adds Jinja2's empty last
     Value ctx = Value::newDict();
     ctx.dict().setString("s", Value::string(s));
     auto env = makeEnv({{"printed", "{{ s | indent(2) }}|{{ s | indent(2, true, true) }}"},
-                        {"values", "{% set a = s | indent(2) %}{% set b = s | indent(2, true, "
-                                   "true) %}{{ a ~ '|' ~ b }}"}});
+                        {"values",
+                         "{% set a = s | indent(2) %}{% set b = s | indent(2, true, "
+                         "true) %}{{ a ~ '|' ~ b }}"}});
     std::string printed = env->render("printed", ctx);
     CHECK(env->render("values", ctx) == printed);
     return printed;

@@ -307,12 +307,6 @@ std::vector<std::string_view> lineViews(std::string_view s, bool keepends) {
   return lines;
 }
 
-void reserveToAppend(std::string& out, size_t extra) {
-  constexpr size_t kLargeAddition = size_t{1} << 20;
-  size_t needed = out.size() + extra;
-  if (needed > out.capacity() && extra >= kLargeAddition) out.reserve(needed + needed / 8);
-}
-
 bool mayHaveLineBreak(std::string_view s) {
   return std::any_of(s.begin(), s.end(),
                      [](char c) { return kLineBreakLeads.table[static_cast<unsigned char>(c)]; });

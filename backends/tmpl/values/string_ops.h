@@ -43,7 +43,11 @@ class LineCursor {
 /// Makes room in `out` for `extra` more bytes. A large addition gets an eighth of headroom
 /// instead of std::string's doubling at the next append: an output that ends in one large
 /// piece (a rendered body and a few lines after it) then holds about its size, not twice it.
-void reserveToAppend(std::string& out, size_t extra);
+inline void reserveToAppend(std::string& out, size_t extra) {
+  constexpr size_t kLargeAddition = size_t{1} << 20;
+  size_t needed = out.size() + extra;
+  if (extra >= kLargeAddition && needed > out.capacity()) out.reserve(needed + needed / 8);
+}
 /// False when `s` certainly has a single line (no byte that can start a line break).
 bool mayHaveLineBreak(std::string_view s);
 /// str.strip(chars): whitespace when `chars` is null.

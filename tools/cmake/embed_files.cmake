@@ -25,14 +25,19 @@ function(smachac_embed_files target)
   if(EMB_TOKENS)
     set(tokens_flag "--tokens")
   endif()
+  # The generator rewrites the source only when it changes (nothing recompiles after a rebuilt
+  # generator that writes the same table); the stamp records that it ran.
+  set(stamp "${out}.stamp")
   add_custom_command(
-    OUTPUT "${out}"
+    OUTPUT "${stamp}"
+    BYPRODUCTS "${out}"
     COMMAND smachac_embed_gen "${out}" ${EMB_NAMESPACE} ${EMB_FUNCTION} "${EMB_BASE_DIR}"
             ${tokens_flag} ${EMB_FILES}
+    COMMAND "${CMAKE_COMMAND}" -E touch "${stamp}"
     DEPENDS smachac_embed_gen ${EMB_FILES} "${list_file}"
     COMMENT "Embedding ${target}"
     VERBATIM)
-  add_library(${target} STATIC "${out}")
+  add_library(${target} STATIC "${out}" "${stamp}")
   file(RELATIVE_PATH folder "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
   smachac_include_root(${target} "${folder}")  # the folder's header declares the function
   target_link_libraries(${target} PUBLIC smachac_support)

@@ -39,6 +39,12 @@ class Environment {
               std::span<const EmbeddedFile> builtins);
   ~Environment();
   Environment(const Environment&) = delete;
+
+  /// From now on every Environment destroyed leaves its memory to the end of the process
+  /// instead of freeing it: for a process that exits as soon as its work is written (the
+  /// driver's compile), never for one that keeps running or checks for leaks.
+  static void leaveToProcessExit();
+
   Environment& operator=(const Environment&) = delete;
 
   /// Renders template `name` (an exact template name) with `context` (a dict).

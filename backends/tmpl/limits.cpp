@@ -8,8 +8,6 @@
 namespace smachac::tmpl {
 namespace {
 
-constexpr size_t kBytesPerStep = 256;
-
 const Limits kDefaultLimits{};
 thread_local const Limits* active_limits = &kDefaultLimits;
 thread_local uint64_t* active_steps = nullptr;
@@ -24,8 +22,8 @@ void checkSteps(uint64_t steps) {
   }
 }
 
-void chargeWork(size_t bytes) {
-  if (active_steps == nullptr || bytes < kBytesPerStep) return;
+void chargeLargeWork(size_t bytes) {
+  if (active_steps == nullptr) return;
   *active_steps += bytes / kBytesPerStep;
   checkSteps(*active_steps);
 }

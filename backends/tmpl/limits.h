@@ -19,9 +19,18 @@ struct Limits {
 /// The limits of the render running on this thread (the defaults outside any render).
 const Limits& activeLimits();
 
+/// Bytes of created values that count as one execution step.
+constexpr size_t kBytesPerStep = 256;
+
+/// chargeWork for a value of at least kBytesPerStep bytes.
+void chargeLargeWork(size_t bytes);
+
 /// Charges creating `bytes` bytes of values to the running render's steps; raises Fault when
-/// they exceed the limit. Outside a render it does nothing.
-void chargeWork(size_t bytes);
+/// they exceed the limit. Outside a render it does nothing. Inline: most values are small
+/// and cost nothing.
+inline void chargeWork(size_t bytes) {
+  if (bytes >= kBytesPerStep) chargeLargeWork(bytes);
+}
 
 /// Raises Fault when `steps` exceed the active limit.
 void checkSteps(uint64_t steps);

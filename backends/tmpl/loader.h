@@ -40,7 +40,6 @@ class Loader {
  private:
   std::optional<std::string> resolveIn(const std::vector<std::string>& entries,
                                        std::string_view name) const;
-  std::vector<std::string> listDir(const std::string& dir, std::string_view subdir) const;
   const EmbeddedFile* findBuiltin(std::string_view path) const;
 
   std::vector<std::string> dirs_;

@@ -1,21 +1,46 @@
-// readFileText: stat, open, read in binary, and report a failure at any step as nullopt.
+// readFileText: open (never blocking on a FIFO), check it is a regular file, read it whole,
+// and report a failure at any step as nullopt. Plain POSIX calls: an ifstream copied through
+// a stringstream cost ~10 K instructions a file, on a cold compile that reads several.
 #include "ir/support/file_text.h"
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 
 namespace smachac {
+namespace {
+
+/// The bytes left in `fd`, read until end of file (the size is a first guess: a file may
+/// change while it is read); nullopt on a read error.
+std::optional<std::string> readAll(int fd, size_t expected_size) {
+  std::string text(expected_size + 1, '\0');
+  size_t length = 0;
+  while (true) {
+    if (length == text.size()) text.resize(text.size() * 2);
+    ssize_t got = ::read(fd, text.data() + length, text.size() - length);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) return std::nullopt;
+    if (got == 0) break;
+    length += static_cast<size_t>(got);
+  }
+  text.resize(length);
+  return text;
+}
+
+}  // namespace
 
 std::optional<std::string> readFileText(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return std::move(text).str();
+  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) return std::nullopt;
+  struct stat info;
+  std::optional<std::string> text;
+  if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode)) {
+    text = readAll(fd, static_cast<size_t>(info.st_size));
+  }
+  ::close(fd);
+  return text;
 }
 
 }  // namespace smachac

@@ -14,6 +14,7 @@
 #include "tools/smachac/depfile.h"
 #include "tools/smachac/library_output.h"
 #include "tools/smachac/output.h"
+#include "tools/smachac/process_exit.h"
 #include "tools/smachac/quick_args.h"
 #include "tools/smachac/script_inputs.h"
 #include "tools/smachac/session.h"
@@ -169,6 +170,7 @@ int runCompile(const Args& raw_args) {
   }
   if (o.scripts.inputs.empty()) return usageError("no input script (see `smachac --help`)");
   o.common.sub_script_alone = o.syntax_only;
+  leaveMemoryToProcessExit();
   Session session;
   if (std::optional<std::string> error = session.configure(warning_flags, o.common)) {
     return usageError(*error);

@@ -1,13 +1,13 @@
 // smachac's entry point: normalises the command line, picks the subcommand, and runs it on a
-// thread with a large stack (deeply nested input must give a diagnostic, not a crash).
+// large stack (large_stack.h: deeply nested input must give a diagnostic, not a crash).
 #include <malloc.h>
-#include <pthread.h>
 
-#include <cstdio>
 #include <string_view>
 
 #include "tools/smachac/args.h"
 #include "tools/smachac/commands.h"
+#include "tools/smachac/large_stack.h"
+#include "tools/smachac/process_exit.h"
 
 namespace {
 
@@ -37,30 +37,18 @@ int dispatch(const Args& args) {
   return smachac::driver::runCompile(args);
 }
 
-void* runJob(void* raw) {
+void runJob(void* raw) {
   Job* job = static_cast<Job*>(raw);
   job->exit_code = dispatch(job->args);
-  return nullptr;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  // One malloc arena: the job thread allocates from the main thread's (which waits) rather
-  // than mapping an arena of its own and handing it back at exit.
+  // One malloc arena: a job thread (sanitizer builds) allocates from the main thread's
+  // (which waits) rather than mapping an arena of its own and handing it back at exit.
   mallopt(M_ARENA_MAX, 1);
   Job job{smachac::driver::normalizeArgs(Args(argv + 1, argv + argc))};
-  constexpr size_t kStackBytes = size_t{1} << 30;  // reserved, not committed
-  pthread_attr_t attr;
-  pthread_attr_init(&attr);
-  pthread_attr_setstacksize(&attr, kStackBytes);
-  pthread_t thread;
-  if (pthread_create(&thread, &attr, &runJob, &job) != 0) {
-    runJob(&job);
-  } else {
-    pthread_join(thread, nullptr);
-  }
-  pthread_attr_destroy(&attr);
-  std::fflush(stdout);
-  return job.exit_code;
+  smachac::driver::runOnLargeStack(&runJob, &job);
+  return smachac::driver::finishProcess(job.exit_code);
 }

@@ -109,7 +109,7 @@ Value roundFilter(Exec&, const Value& in, Args args) {
 
 }  // namespace
 
-void registerNumberFilters(Registry& r) {
+void registerNumberFilters(BuiltinTable& r) {
   r.addFilter("int", intFilter);
   r.addFilter("float", floatFilter);
   r.addFilter("abs", absFilter);

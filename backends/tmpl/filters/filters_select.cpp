@@ -157,7 +157,7 @@ Value groupbyFilter(Exec&, const Value& in, Args args) {
 
 }  // namespace
 
-void registerSelectFilters(Registry& r) {
+void registerSelectFilters(BuiltinTable& r) {
   r.addFilter("map", mapFilter);
   r.addFilter("select", selectFilter);
   r.addFilter("reject", rejectFilter);

@@ -17,7 +17,9 @@ using Args = const CallArgs&;
 
 Value joinFilter(Exec&, const Value& in, Args args) {
   ArgBinder b(args, "join", {"d", "attribute"});
-  std::string sep = b.has(0) ? str(*b.get(0)) : "";
+  std::string converted;  // a separator that is not a string, as str() prints it
+  if (b.has(0) && !b.get(0)->isString()) converted = str(*b.get(0));
+  std::string_view sep = b.has(0) && b.get(0)->isString() ? b.get(0)->s() : converted;
   AttrPath path(b.get(1, Value::none()));
   std::string out;
   bool first = true;
@@ -41,6 +43,11 @@ Value joinFilter(Exec&, const Value& in, Args args) {
 Value sortFilter(Exec&, const Value& in, Args args) {
   ArgBinder b(args, "sort", {"reverse", "case_sensitive", "attribute"});
   std::vector<Value> items = iterate(in);
+  bool any_string =
+      std::any_of(items.begin(), items.end(), [](const Value& v) { return v.isString(); });
+  if (!b.has(2) && !any_string) {  // each item is its own key (the pairs of `items()`)
+    return Value::newList(sortValues(std::move(items), b.getBool(0, false), nullptr));
+  }
   std::vector<AttrPath> paths = multiAttrPath(b.get(2, Value::none()));
   bool case_sensitive = b.getBool(1, false);
   std::vector<Value> keys;
@@ -185,7 +192,7 @@ Value attrFilter(Exec&, const Value& in, Args args) {
 
 }  // namespace
 
-void registerSequenceFilters(Registry& r) {
+void registerSequenceFilters(BuiltinTable& r) {
   r.addFilter("join", joinFilter);
   r.addFilter("sort", sortFilter);
   r.addFilter("dictsort", dictsortFilter);

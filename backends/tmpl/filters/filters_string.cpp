@@ -109,23 +109,31 @@ size_t indentedSize(std::string_view input, std::string_view indention) {
   return input.size() + (breaks + 2) * indention.size();
 }
 
-// indent's arguments; with a string input, which `indent` needs.
+// indent's arguments; with a string input, which `indent` needs. A width of up to
+// kSpaces.size() views a constant run of spaces instead of building the indention.
 struct IndentCall {
-  std::string indention;
+  std::string_view view;  // the string argument, or a run of kSpaces
+  std::string built;      // a longer run of spaces
   bool first = false;
   bool blank = false;
+  std::string_view indention() const { return built.empty() ? view : std::string_view(built); }
 };
+
+const std::string_view kSpaces = "                                                                ";
 
 IndentCall bindIndent(const Value& in, Args args) {
   ArgBinder b(args, "indent", {"width", "first", "blank"});
   IndentCall call;
   if (b.has(0) && b.get(0)->isString()) {
-    call.indention = b.get(0)->s();
+    call.view = b.get(0)->s();
   } else {
     int64_t width = b.getInt(0, 4);
-    if (width > 0) {
-      checkSize(static_cast<size_t>(width), "string");
-      call.indention.assign(static_cast<size_t>(width), ' ');
+    auto count = static_cast<size_t>(width);
+    if (width > 0) checkSize(count, "string");
+    if (width > 0 && count <= kSpaces.size()) {
+      call.view = kSpaces.substr(0, count);
+    } else if (width > 0) {
+      call.built.assign(count, ' ');
     }
   }
   if (!in.isString()) {
@@ -141,24 +149,34 @@ Value indentFilter(Exec&, const Value& in, Args args) {
   IndentCall call = bindIndent(in, args);
   const std::string& input = in.s();
   if (!mayHaveLineBreak(input)) {  // one line: only `first` changes it
-    return call.first && !call.indention.empty()
-               ? Value::string(call.indention + input, in.isMarkup())
-               : in;
+    if (!call.first || call.indention().empty()) return in;
+    std::string out;
+    out.reserve(call.indention().size() + input.size());
+    out.append(call.indention()).append(input);
+    return Value::string(std::move(out), in.isMarkup());
   }
   std::string out;
-  out.reserve(indentedSize(input, call.indention));
-  appendIndented(out, input, call.indention, call.first, call.blank);
+  out.reserve(indentedSize(input, call.indention()));
+  appendIndented(out, input, call.indention(), call.first, call.blank);
   return Value::string(std::move(out), in.isMarkup());
 }
 
-// `{{ text | indent(n) }}` with more than one line: written straight into the output, without
-// the indented copy beside it (on a large generated body, the copy is the render's peak).
+// `{{ text | indent(n) }}` written straight into the output, without the indented copy beside
+// it (on a large generated body, the copy is the render's peak). Each step is charged as the
+// string value of indentFilter would have been.
 bool indentInto(Exec&, const Value& in, Args args, std::string& out) {
   IndentCall call = bindIndent(in, args);
-  if (!mayHaveLineBreak(in.s())) return false;
+  if (!mayHaveLineBreak(in.s())) {  // one line: the indention (with `first`) and the line
+    bool indented = call.first && !call.indention().empty();
+    std::string_view prefix = indented ? call.indention() : std::string_view();
+    if (indented) chargeWork(prefix.size() + in.s().size());
+    reserveToAppend(out, prefix.size() + in.s().size());
+    out.append(prefix).append(in.s());
+    return true;
+  }
   size_t start = out.size();
-  reserveToAppend(out, indentedSize(in.s(), call.indention));
-  appendIndented(out, in.s(), call.indention, call.first, call.blank);
+  reserveToAppend(out, indentedSize(in.s(), call.indention()));
+  appendIndented(out, in.s(), call.indention(), call.first, call.blank);
   chargeWork(out.size() - start);  // what the string value would have been charged
   return true;
 }
@@ -263,7 +281,7 @@ Value tojsonFilter(Exec&, const Value& in, Args args) {
 
 }  // namespace
 
-void registerStringFilters(Registry& r) {
+void registerStringFilters(BuiltinTable& r) {
   r.addFilter("lower", lowerFilter);
   r.addFilter("upper", upperFilter);
   r.addFilter("capitalize", capitalizeFilter);

@@ -102,7 +102,7 @@ bool notStringTest(Exec&, const Value& v, Args args) {
 
 }  // namespace
 
-void registerSmachaExtensions(Registry& r) {
+void registerSmachaExtensions(BuiltinTable& r) {
   r.addFilter("exptostr", exptostrFilter);
   r.addTest("expression", expressionTest);
   r.addTest("not_string", notStringTest);

@@ -117,7 +117,7 @@ bool testTest(Exec& ex, const Value& v, Args a) {
 
 }  // namespace
 
-void registerBuiltinTests(Registry& r) {
+void registerBuiltinTests(BuiltinTable& r) {
   r.addTest("defined", definedTest);
   r.addTest("undefined", undefinedTest);
   r.addTest("none", noneTest);

@@ -59,7 +59,8 @@ class Source {
   bool done_ = false;
 };
 
-// The filtered item stream with look-ahead, which `loop.last`/`length` need.
+// The filtered item stream with look-ahead, which `loop.last`/`length` need: one item held
+// by `peek` (`loop.last`, no allocation), or all the rest buffered by `remaining`.
 class Feed {
  public:
   Feed(Exec& ex, Site& site, const ForStmt& node, Value iterable)
@@ -70,22 +71,34 @@ class Feed {
       out = std::move(buffer_[head_++]);
       return true;
     }
+    if (has_peeked_) {
+      has_peeked_ = false;
+      out = std::move(peeked_);
+      return true;
+    }
     return fetch(out);
   }
 
   bool peek(Value& out) {
-    if (head_ == buffer_.size()) {
+    if (head_ < buffer_.size()) {
+      out = buffer_[head_];
+      return true;
+    }
+    if (!has_peeked_) {
       Value v;
       if (!fetch(v)) return false;
-      buffer_.erase(buffer_.begin(), buffer_.begin() + static_cast<std::ptrdiff_t>(head_));
-      head_ = 0;
-      buffer_.push_back(std::move(v));
+      peeked_ = std::move(v);
+      has_peeked_ = true;
     }
-    out = buffer_[head_];
+    out = peeked_;
     return true;
   }
 
   size_t remaining() {
+    if (has_peeked_) {  // the buffer is consumed: the held item comes first
+      buffer_.push_back(std::move(peeked_));
+      has_peeked_ = false;
+    }
     Value v;
     while (fetch(v)) buffer_.push_back(std::move(v));
     return buffer_.size() - head_;
@@ -114,6 +127,8 @@ class Feed {
   Source source_;
   std::vector<Value> buffer_;  // items fetched ahead; the first `head_` are consumed
   size_t head_ = 0;
+  Value peeked_;  // the item `peek` fetched, once the buffer is consumed
+  bool has_peeked_ = false;
   Ref<Frame> test_frame_;
 };
 

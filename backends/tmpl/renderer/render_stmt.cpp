@@ -364,7 +364,10 @@ void bindTarget(Frame& frame, const Expr* target, const Value& value, const uint
     return;
   }
   const auto& items = static_cast<const SeqExpr*>(target)->items;
-  std::vector<Value> values = unpack(value, items.size());
+  // A list or tuple of the right size (the pairs of `items()`) is bound in place.
+  bool in_place = value.isListOrTuple() && value.list().items().size() == items.size();
+  std::vector<Value> copied = in_place ? std::vector<Value>() : unpack(value, items.size());
+  const std::vector<Value>& values = in_place ? value.list().items() : copied;
   size_t offset = 0;
   for (size_t i = 0; i < items.size(); ++i) {
     bindTarget(frame, items[i], values[i], slots ? slots + offset : nullptr);

@@ -82,8 +82,7 @@ void Context::exportName(const std::string* name) {
   }
 }
 
-void Context::unexportName(const std::string* name) {
-  if (exported_.empty()) return;
+void Context::unexportListed(const std::string* name) {
   exported_.erase(std::remove(exported_.begin(), exported_.end(), name), exported_.end());
 }
 
@@ -126,6 +125,7 @@ Exec::Exec(EnvironmentImpl& environment, const SkipPolicy& skip_policy, bool kee
     : env(environment),
       registry(registryOf(environment)),
       skip(skip_policy),
+      step_limit_(environment.limits().steps),
       limits_(environment.limits(), steps_),
       keep_(keep) {
   stack_base_ = reinterpret_cast<uintptr_t>(__builtin_frame_address(0));
@@ -192,8 +192,6 @@ void Exec::adopt(Frame* frame) {
     frames_.emplaceBack(frame);
   }
 }
-
-void Exec::step() { checkSteps(++steps_); }
 
 void Exec::checkStack() const {
   auto here = reinterpret_cast<uintptr_t>(__builtin_frame_address(0));

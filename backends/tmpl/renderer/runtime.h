@@ -61,7 +61,9 @@ class Context final : public Object {
   Value resolve(const std::string* name, size_t hash, const Registry& registry) const;
   void setVar(const std::string* name, const Value& value);
   void exportName(const std::string* name);
-  void unexportName(const std::string* name);
+  void unexportName(const std::string* name) {
+    if (!exported_.empty()) unexportListed(name);  // imports at the top of a root: nothing yet
+  }
 
   /// Drops everything the context holds (breaks reference cycles through macros); keeps the
   /// capacity of its tables for reuse.
@@ -72,6 +74,7 @@ class Context final : public Object {
 
  private:
   const Value* find(const std::string* name, size_t hash) const;
+  void unexportListed(const std::string* name);
   /// One bit per interned name (by address): `names_` has the bits of every name in `vars_`
   /// and `locals_`, so most lookups of a name that is not there skip both scans.
   static uint64_t nameBit(const std::string* name) {
@@ -156,7 +159,10 @@ class Exec {
   const Template* tmpl = nullptr;  // the template whose code runs (for error locations)
   int depth = 0;
 
-  void step();
+  /// Counts one execution step; raises Fault past the environment's limit.
+  void step() {
+    if (++steps_ > step_limit_) checkSteps(steps_);
+  }
   /// Records a context or a capturable frame (see the constructor's `keep`).
   Context* adopt(Context* ctx);
   /// A fresh context owned by this call, reusing one the environment kept from an earlier
@@ -184,9 +190,8 @@ class Exec {
   std::vector<std::unique_ptr<SkipMask>> own_masks_;
   static constexpr size_t kMaxCachedPolicies = 256;
 
- public:
- private:
   uint64_t steps_ = 0;
+  uint64_t step_limit_;  // the steps of the limits below (read once: they hold for the call)
   ScopedLimits limits_;  // this environment's limits and steps_, active while rendering
   uintptr_t stack_base_;
   bool keep_;

@@ -19,16 +19,28 @@ struct ViewHash {
   size_t operator()(std::string_view s) const { return std::hash<std::string_view>()(s); }
 };
 
+// Where `s` goes in the per-thread cache of interned names: its size and three of its bytes.
+size_t internCacheSlot(std::string_view s) {
+  if (s.empty()) return 0;
+  auto byte = [&](size_t i) { return static_cast<size_t>(static_cast<unsigned char>(s[i])); };
+  return (s.size() ^ byte(0) << 1 ^ byte(s.size() / 2) << 3 ^ byte(s.size() - 1) << 5) & 63;
+}
+
 }  // namespace
 
 const std::string* intern(std::string_view s) {
+  // Recent names per thread, in front of the locked and hashed pool: a render interns the
+  // same few names (block names, keyword arguments) over and over.
+  thread_local const std::string* recent[64] = {};
+  const std::string*& cached = recent[internCacheSlot(s)];
+  if (cached && *cached == s) return cached;
   static std::mutex mutex;
   // Never freed: the pointers escape into compiled templates and values.
   static auto* pool = new std::unordered_set<std::string, ViewHash, std::equal_to<>>();
   std::lock_guard<std::mutex> lock(mutex);
   auto found = pool->find(s);
-  if (found != pool->end()) return &*found;
-  return &*pool->emplace(s).first;
+  cached = found != pool->end() ? &*found : &*pool->emplace(s).first;
+  return cached;
 }
 
 namespace {
@@ -119,12 +131,6 @@ Value Object::call(Exec&, const CallArgs&) const {
   fail("`" + std::string(typeName()) + "` object is not callable");
 }
 
-Value Value::none() {
-  Value v;
-  v.kind_ = Kind::None;
-  return v;
-}
-
 Value Value::boolean(bool b) {
   Value v;
   v.kind_ = Kind::Bool;
@@ -187,19 +193,6 @@ Value Value::object(const Object* object) {
   return v;
 }
 
-Value Value::undefinedName(const std::string* name) {
-  Value v;
-  v.flags_ = kName;
-  v.name_ = name;
-  return v;
-}
-
-Value Value::missing(const std::string* name) {
-  Value v = undefinedName(name);
-  v.flags_ = kMissing;
-  return v;
-}
-
 Value Value::undefinedAttribute(const Value& owner, const std::string* attribute) {
   Value v;
   v.flags_ = kAttribute;
@@ -242,11 +235,6 @@ std::string Value::undefinedMessage() const {
     default:
       return "undefined value";
   }
-}
-
-Value Value::loaded() const {
-  if (!isMissing()) return *this;
-  return undefinedName(name_);
 }
 
 Value Value::withMarkup(bool markup) const {

@@ -136,7 +136,14 @@ class Value {
     std::swap(i_, other.i_);
   }
 
-  static Value none();
+  // The small constructors are inline: a render makes them by the thousand. (Not boolean and
+  // integer: inlined, GCC 12 takes the number in the union for an Object's address in the
+  // destructors after them and warns, -Warray-bounds.)
+  static Value none() {
+    Value v;
+    v.kind_ = Kind::None;
+    return v;
+  }
   static Value boolean(bool b);
   static Value integer(int64_t i);
   static Value real(double d);
@@ -149,9 +156,19 @@ class Value {
 
   static Value undefined() { return Value(); }
   /// `name` is undefined (an unknown variable).
-  static Value undefinedName(const std::string* name);
+  static Value undefinedName(const std::string* name) {
+    Value v;
+    v.flags_ = kName;
+    v.name_ = name;
+    return v;
+  }
   /// An unbound variable slot; loads turn it into undefinedName.
-  static Value missing(const std::string* name);
+  static Value missing(const std::string* name) {
+    Value v;
+    v.flags_ = kMissing;
+    v.name_ = name;
+    return v;
+  }
   /// `owner` has no attribute `attribute`.
   static Value undefinedAttribute(const Value& owner, const std::string* attribute);
   /// An undefined value that explains itself with `message` when used.
@@ -191,7 +208,7 @@ class Value {
   /// The message an operation on this undefined value reports.
   std::string undefinedMessage() const;
   /// A missing slot as an ordinary undefined value; other values unchanged.
-  Value loaded() const;
+  Value loaded() const { return isMissing() ? undefinedName(name_) : *this; }
   /// The same string marked safe (Markup) or not.
   Value withMarkup(bool markup) const;
 

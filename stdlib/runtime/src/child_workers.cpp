@@ -1,19 +1,33 @@
-// Persistent worker threads of a Concurrence, and children taken in order by whichever thread
-// is free (child_workers.h).
+// Persistent worker threads of a Concurrence, children taken in order by whichever thread is
+// free, and workers woken only for children that block or run long (child_workers.h).
 #include "child_workers.h"
 
 #include <mutex>
 
 namespace smachac::runtime {
 
+namespace {
+
+/// A run the thread is running a child of; the innermost is `running_run`, each links the
+/// next one out (a child that is itself a Concurrence runs its children on the same thread).
+struct RunningRun {
+  ChildWorkers* workers;
+  const RunningRun* outer;
+};
+
+thread_local const RunningRun* running_run = nullptr;
+
+}  // namespace
+
 ChildWorkers::~ChildWorkers() {
+  watch_.stop();
   stop_.store(true);
   for (Worker& worker : workers_) wake(worker);
   for (Worker& worker : workers_) worker.thread.join();
 }
 
-void ChildWorkers::startWorkers(std::size_t count) {
-  while (workers_.size() < count) {
+void ChildWorkers::startThreads(std::size_t workers) {
+  while (workers_.size() < workers) {
     Worker& worker = workers_.emplace_back();
     try {
       worker.thread = std::thread([this, &worker] { work(worker); });
@@ -22,28 +36,29 @@ void ChildWorkers::startWorkers(std::size_t count) {
       throw;
     }
   }
+  watch_.start();
 }
 
 void ChildWorkers::run(std::size_t n, const std::function<void(std::size_t)>& task) {
   if (n == 0) return;
-  startWorkers(n - 1);
-  Worker* first = nullptr;
+  if (n > 1) startThreads(n - 1);
   {
     std::lock_guard lock(mutex_);
     task_ = &task;
     children_ = n;
-    next_ = 1;  // child 0 is this thread's
+    next_ = 0;
     woken_ = 0;
     unfinished_.store(n);
-    if (n > 1) first = nextToWakeLocked();
   }
-  if (first != nullptr) wake(*first);
-  task(0);
-  unfinished_.fetch_sub(1);
   drain(false);
-  for (std::size_t left = unfinished_.load(); left != 0; left = unfinished_.load()) {
-    unfinished_.wait(left);
-  }
+  joinChildren();
+}
+
+void ChildWorkers::joinChildren() {
+  std::size_t left = unfinished_.load();
+  if (left == 0) return;
+  aboutToBlock();  // runs around this one may have children waiting for this thread
+  for (; left != 0; left = unfinished_.load()) unfinished_.wait(left);
 }
 
 void ChildWorkers::drain(bool wake_next) {
@@ -58,10 +73,35 @@ void ChildWorkers::drain(bool wake_next) {
       task = task_;
       if (wake_next && next_ < children_) next = nextToWakeLocked();
     }
+    watch_.moved();
     if (next != nullptr) wake(*next);
-    (*task)(index);
+    runTask(*task, index);
     if (unfinished_.fetch_sub(1) == 1) unfinished_.notify_one();
   }
+}
+
+void ChildWorkers::runTask(const std::function<void(std::size_t)>& task, std::size_t index) {
+  const RunningRun run{.workers = this, .outer = running_run};
+  running_run = &run;
+  task(index);
+  running_run = run.outer;
+}
+
+void ChildWorkers::aboutToBlock() {
+  for (const RunningRun* run = running_run; run != nullptr; run = run->outer) {
+    run->workers->wakeForUntaken();
+  }
+}
+
+bool ChildWorkers::wakeForUntaken() {
+  Worker* next = nullptr;
+  {
+    std::lock_guard lock(mutex_);
+    if (next_ >= children_) return false;
+    next = nextToWakeLocked();
+  }
+  if (next != nullptr) wake(*next);
+  return true;
 }
 
 ChildWorkers::Worker* ChildWorkers::nextToWakeLocked() {
@@ -70,6 +110,7 @@ ChildWorkers::Worker* ChildWorkers::nextToWakeLocked() {
 }
 
 void ChildWorkers::wake(Worker& worker) {
+  wakes_.fetch_add(1, std::memory_order_relaxed);
   worker.wakes.fetch_add(1);
   worker.wakes.notify_one();
 }

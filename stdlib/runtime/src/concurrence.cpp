@@ -130,6 +130,8 @@ void Concurrence::runAll() {
   if (observer != nullptr) observer->joined();
 }
 
+std::size_t Concurrence::threadWakes() const { return workers_->wakes(); }
+
 void Concurrence::runOne(std::size_t index) {
   try {
     Child& child = children()[index];
@@ -145,14 +147,17 @@ void Concurrence::runOne(std::size_t index) {
 
 void Concurrence::childDone(std::size_t index, std::optional<std::string> outcome,
                             std::exception_ptr error) {
+  if (!spec_.child_termination_cb) {
+    std::lock_guard lock(mutex_);
+    recordLocked(index, std::move(outcome), error);
+    return settleLocked(error != nullptr);
+  }
   std::lock_guard callback_lock(callback_mutex_);
   ChildOutcomes snapshot;
   {
     std::lock_guard lock(mutex_);
-    run_->outcomes[index] = std::move(outcome);
-    run_->errors[index] = error;
-    run_->done[index] = 1;
-    if (error || !spec_.child_termination_cb) return settleLocked(error != nullptr);
+    recordLocked(index, std::move(outcome), error);
+    if (error) return settleLocked(true);
     snapshot = snapshotLocked();
   }
   bool preempt_others = false;
@@ -166,6 +171,13 @@ void Concurrence::childDone(std::size_t index, std::optional<std::string> outcom
   std::lock_guard lock(mutex_);
   if (error) run_->errors[index] = error;
   settleLocked(preempt_others || error != nullptr);
+}
+
+void Concurrence::recordLocked(std::size_t index, std::optional<std::string> outcome,
+                               std::exception_ptr error) {
+  run_->outcomes[index] = std::move(outcome);
+  run_->errors[index] = std::move(error);
+  run_->done[index] = 1;
 }
 
 void Concurrence::settleLocked(bool preempt_others) {
@@ -204,7 +216,8 @@ std::string Concurrence::finish() {
     lock.unlock();
     return finishPreempted();
   }
-  ChildOutcomes outcomes = snapshotLocked();
+  // Only outcome_cb reads the outcomes by label: no map of them built per run without one.
+  ChildOutcomes outcomes = spec_.outcome_cb ? snapshotLocked() : ChildOutcomes{};
   std::optional<int> entry = run_->decided ? run_->decided : decideLocked(true);
   lock.unlock();
   return chooseOutcome(outcomes, entry);

@@ -11,6 +11,7 @@
 #include <random>
 #include <thread>
 
+#include "child_workers.h"
 #include "smachac/runtime/errors.h"
 #include "text.h"
 
@@ -209,6 +210,7 @@ std::string SleepState::execute(UserData& /*userdata*/) {
   }
   std::chrono::duration<double> time(seconds_);
   if (!hasOutcome(kPreempted)) {
+    if (time.count() > 0) ChildWorkers::aboutToBlock();
     std::this_thread::sleep_for(std::min(time, std::chrono::duration<double>(1e8)));
     return kSucceeded;
   }

@@ -1,6 +1,7 @@
 // State: declared outcomes and keys, the preempt flag with its wake-up, path and observer wiring.
 #include "smachac/runtime/state.h"
 
+#include "child_workers.h"
 #include "smachac/runtime/errors.h"
 #include "smachac/runtime/trace.h"
 #include "text.h"
@@ -54,6 +55,7 @@ bool State::waitForPreempt(std::chrono::duration<double> timeout) {
   std::chrono::duration<double> wait = std::min(timeout, std::chrono::duration<double>(1e8));
   auto deadline = std::chrono::steady_clock::now() +
                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(wait);
+  if (wait.count() > 0 && !preemptRequested()) ChildWorkers::aboutToBlock();
   std::unique_lock lock(wait_mutex_);
   return wait_cv_.wait_until(lock, deadline, [this] { return preemptRequested(); });
 }

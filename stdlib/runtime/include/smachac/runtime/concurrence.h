@@ -1,6 +1,7 @@
-// Concurrence: SMACH's split-join container. Every child runs at once (the first on the
-// calling thread, the others on their own threads); the container returns when all have
-// returned. Its outcome, in SMACH's documented precedence:
+// Concurrence: SMACH's split-join container. Every child runs at once as far as they block
+// (taken in order by the calling thread; a child that blocks or runs long hands the children
+// not yet started to threads of their own); the container returns when all have returned.
+// Its outcome, in SMACH's documented precedence:
 //
 //   1. outcome_cb(child outcomes), when given and it returns a non-empty outcome;
 //   2. the outcome_map entry that decided first (see below);
@@ -19,6 +20,7 @@
 #pragma once
 
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
 #include <exception>
 #include <functional>
@@ -31,6 +33,7 @@
 #include <vector>
 
 #include "smachac/runtime/container.h"
+#include "smachac/runtime/light_mutex.h"
 #include "smachac/runtime/literals.h"
 
 namespace smachac::runtime {
@@ -80,6 +83,10 @@ class Concurrence : public Container {
   std::string execute(UserData& parent) override;
   void requestPreempt() override;
 
+  /// How many times its kept threads were woken to take a child, over every execution so far:
+  /// a child that blocks or runs long wakes them, quick children none (for tests).
+  std::size_t threadWakes() const;
+
  protected:
   void collectOwnProblems(std::vector<std::string>& problems) override;
   std::string kindAndName() const override;
@@ -97,6 +104,9 @@ class Concurrence : public Container {
   void runAll();
   void runOne(std::size_t index);
   void childDone(std::size_t index, std::optional<std::string> outcome, std::exception_ptr error);
+  /// Notes what child `index` returned (or threw).
+  void recordLocked(std::size_t index, std::optional<std::string> outcome,
+                    std::exception_ptr error);
   void settleLocked(bool preempt_others);
   void preemptRunningLocked();
   std::string finish();
@@ -111,7 +121,7 @@ class Concurrence : public Container {
   ConcurrenceSpec spec_;
   std::vector<Entry> entries_;             ///< resolved outcome_map, in map order
   std::mutex callback_mutex_;              ///< serialises child_termination_cb
-  std::mutex mutex_;                       ///< guards run_
+  LightMutex mutex_;                       ///< guards run_ (taken for every child that returns)
   std::unique_ptr<Run> run_;               ///< state of the current execution
   std::unique_ptr<ChildWorkers> workers_;  ///< the children's threads, kept between executions
 };

@@ -78,7 +78,8 @@ class State {
   /// Clears a request the state did not act on (containers do this after a child returns).
   void recallPreempt() { servicePreempt(); }
   /// Sleeps up to `timeout`; returns true as soon as a preempt is requested (then the caller
-  /// should servicePreempt() and return `preempted`), false when the time ran out.
+  /// should servicePreempt() and return `preempted`), false when the time ran out. Before it
+  /// sleeps, siblings in a Concurrence that wait to start get a thread at once.
   bool waitForPreempt(std::chrono::duration<double> timeout);
 
   /// Checks this state and everything under it; throws ConsistencyError listing every problem.

@@ -145,39 +145,42 @@ IndentCall bindIndent(const Value& in, Args args) {
   return call;
 }
 
+// Whether indent returns its input unchanged: one line, and no indention before it.
+bool indentKeepsInput(const std::string& input, const IndentCall& call) {
+  return !mayHaveLineBreak(input) && (!call.first || call.indention().empty());
+}
+
+// indent's result appended to `out`, reserved first (`reserve` gets the size to add).
+template <class Reserve>
+void appendIndentResult(std::string& out, const std::string& input, const IndentCall& call,
+                        Reserve reserve) {
+  if (!mayHaveLineBreak(input)) {  // one line: only `first` changes it
+    std::string_view prefix = call.first ? call.indention() : std::string_view();
+    reserve(prefix.size() + input.size());
+    out.append(prefix).append(input);
+    return;
+  }
+  reserve(indentedSize(input, call.indention()));
+  appendIndented(out, input, call.indention(), call.first, call.blank);
+}
+
 Value indentFilter(Exec&, const Value& in, Args args) {
   IndentCall call = bindIndent(in, args);
-  const std::string& input = in.s();
-  if (!mayHaveLineBreak(input)) {  // one line: only `first` changes it
-    if (!call.first || call.indention().empty()) return in;
-    std::string out;
-    out.reserve(call.indention().size() + input.size());
-    out.append(call.indention()).append(input);
-    return Value::string(std::move(out), in.isMarkup());
-  }
+  if (indentKeepsInput(in.s(), call)) return in;
   std::string out;
-  out.reserve(indentedSize(input, call.indention()));
-  appendIndented(out, input, call.indention(), call.first, call.blank);
+  appendIndentResult(out, in.s(), call, [&](size_t size) { out.reserve(size); });
   return Value::string(std::move(out), in.isMarkup());
 }
 
 // `{{ text | indent(n) }}` written straight into the output, without the indented copy beside
-// it (on a large generated body, the copy is the render's peak). Each step is charged as the
-// string value of indentFilter would have been.
+// it (on a large generated body, the copy is the render's peak). It is charged as the string
+// value of indentFilter would have been.
 bool indentInto(Exec&, const Value& in, Args args, std::string& out) {
   IndentCall call = bindIndent(in, args);
-  if (!mayHaveLineBreak(in.s())) {  // one line: the indention (with `first`) and the line
-    bool indented = call.first && !call.indention().empty();
-    std::string_view prefix = indented ? call.indention() : std::string_view();
-    if (indented) chargeWork(prefix.size() + in.s().size());
-    reserveToAppend(out, prefix.size() + in.s().size());
-    out.append(prefix).append(in.s());
-    return true;
-  }
+  bool keeps_input = indentKeepsInput(in.s(), call);
   size_t start = out.size();
-  reserveToAppend(out, indentedSize(in.s(), call.indention()));
-  appendIndented(out, in.s(), call.indention(), call.first, call.blank);
-  chargeWork(out.size() - start);  // what the string value would have been charged
+  appendIndentResult(out, in.s(), call, [&](size_t size) { reserveToAppend(out, size); });
+  if (!keeps_input) chargeWork(out.size() - start);
   return true;
 }
 

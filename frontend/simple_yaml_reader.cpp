@@ -198,7 +198,10 @@ class SimpleYamlReader {
   /// A value on the line of its key or `-`; `limit` is the column of the collection it is in.
   bool inlineValue(int limit) {
     char ch = cursor_.peek();
-    if (ch == '[' || ch == '{') return flowNode() && lineEnd(kNoLimit);
+    if (ch == '[' || ch == '{') {
+      flow_limit_ = limit;
+      return flowNode() && lineEnd(kNoLimit);
+    }
     if (ch == '!') return portableExpr() && lineEnd(kNoLimit);
     YamlScalar s;
     if (ch == '"' || ch == '\'') {
@@ -229,6 +232,19 @@ class SimpleYamlReader {
     return true;
   }
 
+  /// The spaces after a flow collection's opening bracket or comma, and the line breaks: the
+  /// collection goes on over lines deeper than the block collection it is in (blank lines
+  /// between them; a comment, or a line break anywhere else, is left to yaml-cpp).
+  bool skipFlowSpace() {
+    cursor_.skipSpaces();
+    if (cursor_.peek() != '\n') return true;
+    while (cursor_.peek() == '\n') {
+      cursor_.nextLine();
+      cursor_.skipSpaces();
+    }
+    return cursor_.column() > flow_limit_;
+  }
+
   /// After an entry: `,` and the next entry, or the closing bracket (true in `closed`).
   bool flowSeparator(char close, bool& closed) {
     cursor_.skipSpaces();
@@ -237,14 +253,13 @@ class SimpleYamlReader {
     closed = ch == close;
     if (closed) return true;
     if (ch != ',') return false;
-    cursor_.skipSpaces();
-    return cursor_.peek() != close;  // a trailing comma is left to yaml-cpp
+    return skipFlowSpace() && cursor_.peek() != close;  // a trailing comma: yaml-cpp
   }
 
   bool flowSequence() {
     builder_.onSequenceStart(cursor_.mark(), 0);
     ++cursor_.pos;
-    cursor_.skipSpaces();
+    if (!skipFlowSpace()) return false;
     bool closed = cursor_.peek() == ']';
     if (closed) ++cursor_.pos;
     while (!closed) {
@@ -257,7 +272,7 @@ class SimpleYamlReader {
   bool flowMap() {
     builder_.onMapStart(cursor_.mark(), 0);
     ++cursor_.pos;
-    cursor_.skipSpaces();
+    if (!skipFlowSpace()) return false;
     bool closed = cursor_.peek() == '}';
     if (closed) ++cursor_.pos;
     while (!closed) {
@@ -290,6 +305,7 @@ class SimpleYamlReader {
   YamlValueBuilder& builder_;
   int indent_ = -1;
   int depth_ = 0;
+  int flow_limit_ = 0;  ///< the column of the block collection a flow collection is in
 };
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "backends/tmpl/loader.h"
+#include "backends/tmpl/template_files.h"
 #include "ir/support/file_text.h"
 #include "ir/support/suggest.h"
 
@@ -80,9 +81,8 @@ bool plainName(std::string_view name) {
 std::optional<std::string> readTemplateSource(const TemplatePath& path, std::string_view name) {
   if (!plainName(name)) return std::nullopt;
   for (const std::string& dir : path.dirs) {
-    std::error_code ec;
-    fs::path file = fs::path(dir) / name;
-    if (fs::is_regular_file(file, ec)) return readFileText(file.string());
+    std::string file = tmpl::joinTemplatePath(dir, name);
+    if (tmpl::isRegularTemplateFile(file)) return readFileText(file);
   }
   for (const std::string& set : path.builtin_sets) {
     std::string full = withSlash(set) + std::string(name);
@@ -97,8 +97,7 @@ std::optional<std::string> builtinTemplatePath(const TemplatePath& path, std::st
   std::optional<std::string> normal = tmpl::normalizeTemplateName(name);
   if (!normal) return std::nullopt;
   for (const std::string& dir : path.dirs) {
-    std::error_code ec;
-    if (fs::is_regular_file(fs::path(dir) / *normal, ec)) return std::nullopt;
+    if (tmpl::isRegularTemplateFile(tmpl::joinTemplatePath(dir, *normal))) return std::nullopt;
   }
   for (const std::string& set : path.builtin_sets) {
     std::string full = withSlash(set) + *normal;

@@ -26,8 +26,13 @@ EnvironmentImpl::~EnvironmentImpl() {
 }
 
 const Template& EnvironmentImpl::load(std::string_view name) {
+  if (last_template_ && name == last_name_) return *last_template_;
   auto it = templates_.find(name);
-  if (it != templates_.end()) return *it->second;
+  if (it != templates_.end()) {
+    last_name_ = name;
+    last_template_ = it->second.get();
+    return *last_template_;
+  }
   std::optional<TemplateSource> source = loader_.load(name);
   if (!source) {
     fail("template `" + std::string(name) + "` not found; looked in " +
@@ -69,6 +74,16 @@ const std::vector<const std::string*>& EnvironmentImpl::reachableByAddress(const
   std::vector<const std::string*> names = reachableBlocks(tmpl);
   std::sort(names.begin(), names.end());
   return reachable_by_address_.emplace(&tmpl, std::move(names)).first->second;
+}
+
+const SkipPolicy& EnvironmentImpl::blockPolicy(const Template& tmpl, const std::string* only) {
+  std::unique_ptr<SkipPolicy>& policy = block_policies_[{&tmpl, only}];
+  if (!policy) {
+    policy = std::make_unique<SkipPolicy>();
+    policy->only = only;
+    policy->scope = &reachableByAddress(tmpl);
+  }
+  return *policy;
 }
 
 Ref<Context> EnvironmentImpl::takeSpareContext() {
@@ -160,10 +175,16 @@ std::string Environment::render(std::string_view name, const Value& context,
 std::string Environment::renderBlock(std::string_view name, std::string_view block,
                                      const Value& context, const RenderOptions& options) {
   return guarded(name, [&] {
-    SkipPolicy policy = explicitSkips(options);
-    policy.only = intern(block);
+    const std::string* only = intern(block);
     const Template& tmpl = impl_->load(name);
-    policy.scope = &impl_->reachableByAddress(tmpl);
+    SkipPolicy explicit_policy;
+    if (!options.skip_blocks.empty()) {
+      explicit_policy = explicitSkips(options);
+      explicit_policy.only = only;
+      explicit_policy.scope = &impl_->reachableByAddress(tmpl);
+    }
+    const SkipPolicy& policy =
+        options.skip_blocks.empty() ? impl_->blockPolicy(tmpl, only) : explicit_policy;
     std::string out = renderWith(*impl_, tmpl, context, policy);
     std::string_view stripped = unicode::strip(out);
     if (stripped.empty()) return std::string();

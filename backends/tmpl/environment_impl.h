@@ -31,6 +31,9 @@ class EnvironmentImpl {
   const std::vector<const std::string*>& reachableBlocks(const Template& tmpl);
   /// The same names sorted by address (for SkipPolicy::scope).
   const std::vector<const std::string*>& reachableByAddress(const Template& tmpl);
+  /// renderBlock's skip policy for block `only` of `tmpl` (without skip_blocks), kept for the
+  /// environment's life so that it keeps the masks it finds (SkipPolicy::masks).
+  const SkipPolicy& blockPolicy(const Template& tmpl, const std::string* only);
   /// Forgets the cached default modules (after globals change).
   void clearModules();
   ~EnvironmentImpl();
@@ -57,8 +60,19 @@ class EnvironmentImpl {
     size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
   };
   std::unordered_map<std::string, std::unique_ptr<Template>, NameHash, std::equal_to<>> templates_;
+  // The template load() returned last (SMACHA renders one template's blocks in a row).
+  std::string last_name_;
+  const Template* last_template_ = nullptr;
   std::unordered_map<const Template*, std::vector<const std::string*>> reachable_;
   std::unordered_map<const Template*, std::vector<const std::string*>> reachable_by_address_;
+  struct PolicyKeyHash {
+    size_t operator()(const std::pair<const Template*, const std::string*>& key) const {
+      return std::hash<const void*>{}(key.first) * 31 + std::hash<const void*>{}(key.second);
+    }
+  };
+  std::unordered_map<std::pair<const Template*, const std::string*>, std::unique_ptr<SkipPolicy>,
+                     PolicyKeyHash>
+      block_policies_;
   std::vector<Ref<Context>> kept_contexts_;
   std::vector<Ref<Frame>> kept_frames_;
   static constexpr size_t kMaxSpareContexts = 8;

@@ -87,7 +87,7 @@ bool Loader::exists(std::string_view raw_name) const {
 }
 
 // Picks `base`, `base.tpl.py`, `base.tpl`, then the first `base.tpl.<ext>` among `entries`.
-std::optional<std::string> Loader::resolveIn(const std::vector<std::string>& entries,
+std::optional<std::string> Loader::resolveIn(const std::vector<std::string_view>& entries,
                                              std::string_view base) const {
   auto has = [&](const std::string& n) {
     return std::find(entries.begin(), entries.end(), n) != entries.end();
@@ -97,16 +97,17 @@ std::optional<std::string> Loader::resolveIn(const std::vector<std::string>& ent
     if (has(candidate)) return candidate;
   }
   std::string prefix = b + ".tpl.";
-  std::optional<std::string> best;
-  for (const std::string& e : entries) {
-    if (e.size() <= prefix.size() || e.compare(0, prefix.size(), prefix) != 0) continue;
-    std::string_view ext = std::string_view(e).substr(prefix.size());
+  std::optional<std::string_view> best;
+  for (std::string_view e : entries) {
+    if (e.size() <= prefix.size() || !e.starts_with(prefix)) continue;
+    std::string_view ext = e.substr(prefix.size());
     bool word = std::all_of(ext.begin(), ext.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     });
     if (word && (!best || e < *best)) best = e;
   }
-  return best;
+  if (!best) return std::nullopt;
+  return std::string(*best);
 }
 
 std::optional<std::string> Loader::resolveScriptName(std::string_view raw_name) const {
@@ -115,22 +116,21 @@ std::optional<std::string> Loader::resolveScriptName(std::string_view raw_name) 
   size_t slash = name->rfind('/');
   std::string subdir = slash == std::string::npos ? "" : name->substr(0, slash + 1);
   std::string base = slash == std::string::npos ? *name : name->substr(slash + 1);
-  std::vector<std::string> memory_entries;
+  std::vector<std::string_view> memory_entries;
   for (const auto& [n, text] : memory_) {
     if (n.compare(0, subdir.size(), subdir) == 0 &&
         n.find('/', subdir.size()) == std::string::npos) {
-      memory_entries.push_back(n.substr(subdir.size()));
+      memory_entries.push_back(std::string_view(n).substr(subdir.size()));
     }
   }
   if (auto found = resolveIn(memory_entries, base)) return subdir + *found;
   for (const std::string& dir : dirs_) {
-    if (auto found = resolveIn(regularFilesIn(joinTemplatePath(dir, subdir)), base)) {
-      return subdir + *found;
-    }
+    std::vector<std::string> files = regularFilesIn(joinTemplatePath(dir, subdir));
+    if (auto found = resolveIn({files.begin(), files.end()}, base)) return subdir + *found;
   }
   for (const std::string& set : builtin_sets_) {
     std::string prefix = set + subdir;
-    std::vector<std::string> entries;
+    std::vector<std::string_view> entries;  // views of the built-in table's paths
     auto from =
         std::lower_bound(builtins_.begin(), builtins_.end(), std::string_view(prefix),
                          [](const EmbeddedFile& e, std::string_view p) { return e.path < p; });

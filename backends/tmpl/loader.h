@@ -38,7 +38,7 @@ class Loader {
   void addMemory(std::string name, std::string text);
 
  private:
-  std::optional<std::string> resolveIn(const std::vector<std::string>& entries,
+  std::optional<std::string> resolveIn(const std::vector<std::string_view>& entries,
                                        std::string_view name) const;
   const EmbeddedFile* findBuiltin(std::string_view path) const;
 

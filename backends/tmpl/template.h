@@ -35,6 +35,8 @@ struct SkipMask {
   std::vector<char> skipped;       // by BlockStmt::index
   Value module;                    // the template's default module under this policy (imports)
   std::unique_ptr<RootPlan> plan;  // built on the first render under this policy
+  /// The blocks not skipped, in order (what registerBlocks adds to a context).
+  std::vector<const BlockStmt*> kept;
 };
 
 class Template {

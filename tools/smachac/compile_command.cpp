@@ -40,11 +40,14 @@ std::string subcommandNames() {
   return names;
 }
 
+/// What `--version` prints (CLI11 adds the line break).
+std::string versionText() { return fmt::format("smachac {}", kVersion); }
+
 void setUp(CLI::App& app, CompileOptions& o) {
   app.name("smachac");
   app.description("smachac: a compiler for SMACHA state-machine scripts.\nSubcommands: " +
                   subcommandNames() + " (run `smachac <subcommand> --help`).");
-  app.set_version_flag("--version", fmt::format("smachac {}", kVersion));
+  app.set_version_flag("--version", versionText());
   addScriptInputs(app, o.scripts);
   app.add_option("--target", o.common.target, "output target: " + targetNames());
   app.add_option("-o,--output", o.output, "output file (default: standard output)");
@@ -151,6 +154,12 @@ std::variant<std::optional<LibraryOutput>, int> libraryOutputOf(const CompileOpt
 }  // namespace
 
 int runCompile(const Args& raw_args) {
+  // `--version` alone (what build scripts ask) prints what CLI11 would, without setting it up
+  // (0.3 M of the 0.5 M instructions the process ran).
+  if (raw_args.size() == 1 && raw_args.front() == "--version") {
+    std::cout << versionText() << '\n';
+    return kExitOk;
+  }
   Args args = raw_args;
   std::vector<std::string> warning_flags = takeWarningFlags(args);
   std::optional<CompileOptions> quick = readQuickCompileLine(args);

@@ -181,6 +181,8 @@ struct FilterExpr : Expr {
   const std::string* name;
   const FilterDef* def = nullptr;
   ArgList args;
+  /// `map('f')` under `join`: the definition of `f`, found at its first use (the renderer's).
+  mutable const FilterDef* mapped = nullptr;
   FilterExpr(uint32_t p, Expr* in, const std::string* n)
       : Expr(ExprKind::Filter, p), input(in), name(n) {}
 };

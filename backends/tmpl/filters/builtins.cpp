@@ -141,6 +141,10 @@ const Value* Registry::global(std::string_view name) const {
   return globals_.dict().findString(name);
 }
 
+const Value* Registry::global(std::string_view name, size_t hash) const {
+  return globals_.dict().findString(name, hash);
+}
+
 std::vector<std::string_view> Registry::filterNames() const {
   std::vector<std::string_view> custom;
   for (const auto& entry : custom_filters_) custom.push_back(entry.first);

@@ -76,6 +76,8 @@ class Registry {
   const FilterDef* filter(std::string_view name) const;
   const TestDef* test(std::string_view name) const;
   const Value* global(std::string_view name) const;
+  /// The same with the name's hash (`hashString`), as frames keep it for context lookups.
+  const Value* global(std::string_view name, size_t hash) const;
   std::vector<std::string_view> filterNames() const;
   std::vector<std::string_view> testNames() const;
 

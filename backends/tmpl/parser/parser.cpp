@@ -14,7 +14,7 @@ const std::vector<std::string_view> kKnownTags = {
     "import", "set", "with",  "call",    "filter", "do",    "raw",
 };
 
-std::string joinQuoted(const std::vector<std::string_view>& names) {
+std::string joinQuoted(std::span<const std::string_view> names) {
   std::string out;
   for (size_t i = 0; i < names.size(); ++i) {
     if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
@@ -76,7 +76,7 @@ std::string Parser::shown(const Token& token) const {
 // body := ( DATA | "{{" tuple "}}" | "{%" statement "%}" )*   -- up to one of `end_tokens`
 Body Parser::subparse(std::initializer_list<std::string_view> end_tokens) {
   bool tracked = end_tokens.size() > 0;
-  if (tracked) end_token_stack_.emplace_back(end_tokens);
+  if (tracked) end_token_stack_.emplace_back(end_tokens.begin(), end_tokens.size());
   Body body;
   while (!current().is(Tok::Eof)) {
     const Token& token = current();
@@ -107,7 +107,7 @@ Body Parser::parseStatements(std::initializer_list<std::string_view> end_tokens,
   expect(Tok::BlockEnd);
   Body body = subparse(end_tokens);
   if (current().is(Tok::Eof)) {
-    end_token_stack_.emplace_back(end_tokens);
+    end_token_stack_.emplace_back(end_tokens.begin(), end_tokens.size());
     failEof();
   }
   if (end_tag == EndTag::Consume) next();

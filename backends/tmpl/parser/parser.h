@@ -5,6 +5,7 @@
 
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -169,7 +170,9 @@ class Parser {
   size_t index_ = 0;
   int nesting_ = 0;
   std::vector<OpenTag> tag_stack_;
-  std::vector<std::vector<std::string_view>> end_token_stack_;
+  // The end tags of the bodies being parsed, for error messages: views of the callers'
+  // initializer lists, which outlive the parse of their body (no copy per body).
+  std::vector<std::span<const std::string_view>> end_token_stack_;
   std::vector<const std::string*> block_stack_;
   ParsedTemplate result_;
 

@@ -10,7 +10,17 @@
 namespace smachac::tmpl {
 
 // render_expr.cpp
-Value eval(Exec& ex, Site& site, const Expr* expr);
+/// Any expression (locates a fault at the expression); eval below is this with the two
+/// commonest kinds inline.
+Value evalExpr(Exec& ex, Site& site, const Expr* expr);
+/// Evaluates `expr`: a constant or a name (neither can fail) inline, the rest by evalExpr.
+inline Value eval(Exec& ex, Site& site, const Expr* expr) {
+  if (expr->kind == ExprKind::Name) {
+    return site.frame->slot(static_cast<const NameExpr*>(expr)->ref).loaded();
+  }
+  if (expr->kind == ExprKind::Const) return static_cast<const ConstExpr*>(expr)->value;
+  return evalExpr(ex, site, expr);
+}
 void evalArgs(Exec& ex, Site& site, const ArgList& list, OwnedArgs& out);
 /// Jinja's environment.getattr: attribute (method) first, then item.
 Value getAttribute(const Value& obj, const std::string* name);
@@ -30,6 +40,8 @@ void bindTarget(Frame& frame, const Expr* target, const Value& value, const uint
 Ref<Context> newContext(Exec& ex, const Template& tmpl, Value parent);
 void registerBlocks(Exec& ex, Context& ctx, const Template& tmpl);
 void renderRoot(Exec& ex, const Template& tmpl, Context& ctx, std::string& out);
+/// The root code of `tmpl` under this call's skip policy (RootPlan).
+const Body& rootBody(Exec& ex, const Template& tmpl);
 void renderBlockAt(Exec& ex, Context& ctx, size_t index, std::string& out);
 /// Runs `tmpl` in `ctx` (a fresh context) and collects its exports.
 Value makeModule(Exec& ex, const Template& tmpl, Ref<Context> ctx);

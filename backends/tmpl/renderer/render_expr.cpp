@@ -1,5 +1,7 @@
 // Expression evaluation with Jinja2's semantics (attribute/item lookup order, chained
 // comparisons, `and`/`or` returning operands, undefined values that fail when used).
+#include <algorithm>
+
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/renderer/render.h"
 #include "backends/tmpl/values/value_ops.h"
@@ -216,7 +218,7 @@ Value evalInner(Exec& ex, Site& site, const Expr* e) {
 
 }  // namespace
 
-Value eval(Exec& ex, Site& site, const Expr* e) {
+Value evalExpr(Exec& ex, Site& site, const Expr* e) {
   try {
     return evalInner(ex, site, e);
   } catch (const Fault& fault) {
@@ -313,7 +315,76 @@ Value callValue(Exec& ex, const Value& fn, const CallArgs& args) {
   fail("`" + std::string(typeName(fn)) + "` object is not callable");
 }
 
+namespace {
+
+bool isConstArgs(const ArgList& list, size_t max_positional) {
+  if (list.args.size() > max_positional || !list.kwargs.empty()) return false;
+  if (list.dyn_args || list.dyn_kwargs) return false;
+  return std::all_of(list.args.begin(), list.args.end(),
+                     [](const Expr* e) { return e->kind == ExprKind::Const; });
+}
+
+// The `map('f')` under `join` in `seq | map('f') | join(sep)` (SMACHA's render_list), when
+// both take only constants (so evaluating them has no effect whose order could show).
+const FilterExpr* mapUnderJoin(const FilterExpr* join) {
+  static const FilterDef* const kJoin = builtinTable().filter("join");
+  static const FilterDef* const kMap = builtinTable().filter("map");
+  if (join->def != kJoin || !join->input || join->input->kind != ExprKind::Filter) return nullptr;
+  auto* map = static_cast<const FilterExpr*>(join->input);
+  if (map->def != kMap || !map->input || map->args.args.size() != 1) return nullptr;
+  if (!isConstArgs(map->args, 1) || !isConstArgs(join->args, 1)) return nullptr;
+  const Value& name = static_cast<const ConstExpr*>(map->args.args[0])->value;
+  return name.isString() ? map : nullptr;
+}
+
+// `join(sep)` of the mapped items, as joinFilter joins a list (join's errors at `join`).
+Value joinMapped(Exec& ex, const FilterExpr* join, const SmallVector<Value, 8>& mapped) {
+  try {
+    std::string converted;  // a separator that is not a string, as str() prints it
+    const Value* sep = join->args.args.empty()
+                           ? nullptr
+                           : &static_cast<const ConstExpr*>(join->args.args[0])->value;
+    if (sep && !sep->isString()) converted = str(*sep);
+    std::string_view separator = sep && sep->isString() ? std::string_view(sep->s()) : converted;
+    std::string out;
+    for (size_t i = 0; i < mapped.size(); ++i) {
+      if (i > 0) out += separator;
+      appendStr(out, mapped[i]);
+      checkSize(out.size(), "string");
+    }
+    return Value::string(std::move(out));
+  } catch (const Fault& fault) {
+    throw ex.tmpl->error(join->pos, fault.message());
+  }
+}
+
+// `seq | map('f') | join(sep)` without the mapped list's object and join's argument binding:
+// the same items, separator, results and errors (each located at its filter) as the chain.
+Value mapJoin(Exec& ex, Site& site, const FilterExpr* join, const FilterExpr* map) {
+  Value input = eval(ex, site, map->input);
+  SmallVector<Value, 8> mapped;
+  try {
+    const FilterDef* def = map->mapped;
+    if (!def) {
+      const std::string& name = static_cast<const ConstExpr*>(map->args.args[0])->value.s();
+      def = ex.registry.filter(name);
+      if (!def) fail("no filter named `" + name + "`");
+      map->mapped = def;
+    }
+    if (truthy(input)) {
+      for (const Value& item : iterate(input)) mapped.pushBack(applyFilter(ex, *def, item, {}));
+    }
+    chargeWork(mapped.size() * sizeof(Value));  // the steps of the list `map` would make
+  } catch (const Fault& fault) {
+    throw ex.tmpl->error(map->pos, fault.message());
+  }
+  return joinMapped(ex, join, mapped);
+}
+
+}  // namespace
+
 Value applyFilterExpr(Exec& ex, Site& site, const FilterExpr* filter, const Value* block_input) {
+  if (const FilterExpr* map = mapUnderJoin(filter)) return mapJoin(ex, site, filter, map);
   Value input;
   if (filter->input && filter->input->kind == ExprKind::Filter && block_input) {
     input = applyFilterExpr(ex, site, static_cast<const FilterExpr*>(filter->input), block_input);

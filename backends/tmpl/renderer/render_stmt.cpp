@@ -1,5 +1,7 @@
 // Statement execution: output, control flow, assignments (exported at the top level like
 // Jinja2's context.vars), macros, includes, imports, inheritance and block call sites.
+#include <typeinfo>
+
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/limits.h"
 #include "backends/tmpl/renderer/render.h"
@@ -10,12 +12,17 @@
 namespace smachac::tmpl {
 namespace {
 
-void checkOutputSize(size_t size) {
-  size_t limit = activeLimits().string_bytes;
-  if (size > limit) fail("output too large (limit " + std::to_string(limit) + " bytes)");
+[[noreturn]] void failOutputSize(size_t limit) {
+  fail("output too large (limit " + std::to_string(limit) + " bytes)");
 }
 
-void write(Site& site, std::string_view text) {
+inline void checkOutputSize(size_t size) {
+  size_t limit = activeLimits().string_bytes;
+  if (size > limit) failOutputSize(limit);
+}
+
+// Inline: a render writes a text or a value for almost every statement it runs.
+[[gnu::always_inline]] inline void write(Site& site, std::string_view text) {
   checkOutputSize(site.out->size() + text.size());
   reserveToAppend(*site.out, text.size());
   site.out->append(text);
@@ -99,6 +106,15 @@ void execInclude(Exec& ex, Site& site, const IncludeStmt& s) {
     write(site, static_cast<const ModuleObject*>(module.object())->body());
     return;
   }
+  const Body& body = rootBody(ex, *tmpl);
+  if (body.size() <= 1 && (body.empty() || body.front()->kind == StmtKind::Text)) {
+    // Its root is one text under this skip policy (SMACHA's includes of a block that is
+    // skipped): nothing in it sees a context, so it writes the text without one.
+    CallGuard guard(ex, tmpl);
+    RootState root;
+    Site inner{site.frame, site.out, &root, true, false};
+    return execBody(ex, inner, body);
+  }
   Ref<Context> ctx = derivedContext(ex, site, s.locals);
   registerBlocks(ex, *ctx, *tmpl);
   renderRoot(ex, *tmpl, *ctx, *site.out);
@@ -122,9 +138,15 @@ void storeImported(Site& site, const NameExpr* alias, const Value& value, bool t
 void execFromImport(Exec& ex, Site& site, const FromImportStmt& s) {
   Value module = importModule(ex, site, s.template_name, s.loaded, s.with_context, s.locals);
   auto* m = static_cast<const ModuleObject*>(module.object());
+  Context* ctx = s.toplevel ? &site.frame->context() : nullptr;
   for (const ImportedName& n : s.names) {
     if (const Value* v = m->findExport(n.name, n.export_hint)) {
-      storeImported(site, n.alias, *v, s.toplevel);
+      // storeImported inline (a root's imports bind names by the dozen): the context only
+      // ever exports public names, so unexporting a private one does nothing.
+      site.frame->slot(n.alias->ref) = *v;
+      if (!ctx) continue;
+      ctx->setVar(n.alias->name, *v);
+      ctx->unexportName(n.alias->name);
       continue;
     }
     storeImported(site, n.alias,
@@ -232,7 +254,9 @@ void execPrint(Exec& ex, Site& site, const Expr* expr) {
     auto* call = static_cast<const CallExpr*>(expr);
     if (call->callee->kind == ExprKind::Name) {
       Value fn = eval(ex, site, call->callee);
-      if (auto* macro = fn.isObject() ? dynamic_cast<const MacroObject*>(fn.object()) : nullptr) {
+      // MacroObject is final: comparing the type is exact, and cheaper than a dynamic_cast.
+      if (fn.isObject() && typeid(*fn.object()) == typeid(MacroObject)) {
+        auto* macro = static_cast<const MacroObject*>(fn.object());
         OwnedArgs args;
         evalArgs(ex, site, call->args, args);
         try {

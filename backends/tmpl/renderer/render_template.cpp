@@ -17,9 +17,8 @@ Ref<Context> newContext(Exec& ex, const Template& tmpl, Value parent) {
 
 void registerBlocks(Exec& ex, Context& ctx, const Template& tmpl) {
   if (ctx.blocks().capacity() == 0) ctx.blocks().reserve(32);
-  const std::vector<char>& skipped = ex.skipMask(tmpl);
-  for (const BlockStmt* block : tmpl.blocks()) {
-    if (!skipped[block->index]) ctx.blocks().push_back({block->name, &tmpl, block});
+  for (const BlockStmt* block : ex.policyEntry(tmpl).kept) {
+    ctx.blocks().push_back({block->name, &tmpl, block});
   }
 }
 
@@ -55,13 +54,13 @@ std::unique_ptr<RootPlan> buildRootPlan(const Body& body, const std::vector<char
   return plan;
 }
 
+}  // namespace
+
 const Body& rootBody(Exec& ex, const Template& tmpl) {
   SkipMask& mask = ex.policyEntry(tmpl);
   if (!mask.plan) mask.plan = buildRootPlan(tmpl.body(), mask.skipped);
   return mask.plan->body;
 }
-
-}  // namespace
 
 void renderRoot(Exec& ex, const Template& tmpl, Context& ctx, std::string& out) {
   CallGuard guard(ex, &tmpl);
@@ -112,9 +111,6 @@ Value makeModule(Exec& ex, const Template& tmpl, Ref<Context> ctx) {
 }
 
 Value defaultModule(Exec& ex, const Template& tmpl) {
-  for (const auto& [t, module] : ex.modules) {
-    if (t == &tmpl) return module;
-  }
   Value module = ex.policyEntry(tmpl).module;
   if (module.isUndefined()) {
     ++ex.module_depth;  // the cached module's objects belong to the environment
@@ -127,7 +123,6 @@ Value defaultModule(Exec& ex, const Template& tmpl) {
     module = makeModule(ex, tmpl, std::move(ctx));
     ex.policyEntry(tmpl).module = module;
   }
-  ex.modules.emplaceBack(&tmpl, module);
   return module;
 }
 

@@ -11,12 +11,6 @@
 #include "ir/support/python_text.h"
 
 namespace smachac::tmpl {
-namespace {
-
-constexpr int kMaxDepth = 200;
-constexpr size_t kStackBudget = size_t{3} << 20;
-
-}  // namespace
 
 bool SkipPolicy::skips(const std::string* name) const {
   if (!names.empty() && std::find(names.begin(), names.end(), name) != names.end()) return true;
@@ -48,7 +42,7 @@ const Value* Context::find(const std::string* name, size_t hash) const {
 
 Value Context::resolve(const std::string* name, size_t hash, const Registry& registry) const {
   if (const Value* v = find(name, hash)) return *v;
-  if (const Value* g = registry.global(*name)) return *g;
+  if (const Value* g = registry.global(*name, hash)) return *g;
   return Value::missing(name);
 }
 
@@ -62,17 +56,14 @@ void Context::clear() {
   blocks_.clear();
 }
 
-void Context::setVar(const std::string* name, const Value& value) {
-  uint64_t bit = nameBit(name);
-  if (names_ & bit) {
-    for (auto& [n, v] : vars_) {
-      if (n == name) {
-        v = value;
-        return;
-      }
+// setVar of a name whose bit is set: bound already, or another name with the same bit.
+void Context::replaceVar(const std::string* name, const Value& value) {
+  for (auto& [n, v] : vars_) {
+    if (n == name) {
+      v = value;
+      return;
     }
   }
-  names_ |= bit;
   vars_.emplace_back(name, value);
 }
 
@@ -86,12 +77,6 @@ void Context::unexportListed(const std::string* name) {
   exported_.erase(std::remove(exported_.begin(), exported_.end(), name), exported_.end());
 }
 
-Frame* Frame::placeAt(void* memory, Frame* parent, Context* context, uint16_t num_slots) {
-  auto* frame = new (memory) Frame(parent, context, num_slots);
-  for (uint16_t i = 0; i < num_slots; ++i) new (frame->slots() + i) Value();
-  return frame;
-}
-
 Ref<Frame> Frame::make(Frame* parent, Context* context, uint16_t num_slots) {
   return Ref<Frame>(placeAt(::operator new(sizeof(Frame) + num_slots * sizeof(Value)), parent,
                             context, num_slots));
@@ -101,24 +86,11 @@ void Frame::clearSlots() {
   for (uint16_t i = 0; i < num_slots_; ++i) slots()[i] = Value();
 }
 
-FrameHolder::FrameHolder(Exec& ex, Frame* parent, Context* context, const FrameLayout& layout) {
-  static_assert(sizeof(storage_) >= sizeof(Frame) + kInlineSlots * sizeof(Value));
-  if (layout.capturable || layout.num_slots > kInlineSlots) {
-    heap_ = Frame::make(parent, context, layout.num_slots);
-    frame_ = heap_.get();
-    if (layout.capturable) ex.adopt(frame_);
-    return;
-  }
-  frame_ = Frame::placeAt(storage_, parent, context, layout.num_slots);
-  frame_->retain();  // owned by this holder: never deleted through a reference count
-}
-
-FrameHolder::~FrameHolder() {
-  if (!heap_) frame_->~Frame();
-}
-
-Frame::~Frame() {
-  for (uint16_t i = 0; i < num_slots_; ++i) slots()[i].~Value();
+void FrameHolder::placeOnHeap(Exec& ex, Frame* parent, Context* context,
+                              const FrameLayout& layout) {
+  heap_ = Frame::make(parent, context, layout.num_slots);
+  frame_ = heap_.get();
+  if (layout.capturable) ex.adopt(frame_);
 }
 
 Exec::Exec(EnvironmentImpl& environment, const SkipPolicy& skip_policy, bool keep)
@@ -132,33 +104,44 @@ Exec::Exec(EnvironmentImpl& environment, const SkipPolicy& skip_policy, bool kee
 }
 
 SkipMask& Exec::findPolicyEntry(const Template& templ) {
+  for (const auto& [t, mask] : own_found_) {
+    if (t == &templ) return *mask;  // not in skip.recent: the policy may outlive this call
+  }
   SkipMask* found = nullptr;
-  for (const auto& [t, mask] : masks_) {
+  for (const auto& [t, mask] : skip.masks) {
     if (t == &templ) found = mask;
   }
-  if (!found) {
-    std::vector<std::unique_ptr<SkipMask>>& cache = templ.skipMasks();
-    auto matches = [&](const SkipMask& m) {
-      return m.only == skip.only && m.scope == skip.scope && m.names == skip.names;
-    };
-    size_t index = 0;
-    while (index < cache.size() && !matches(*cache[index])) ++index;
-    if (index < cache.size()) {
-      found = cache[index].get();
-    } else {
-      auto m = std::make_unique<SkipMask>(SkipMask{skip.only, skip.scope, skip.names, {}, {}, {}});
-      for (const BlockStmt* block : templ.blocks()) m->skipped.push_back(skip.skipsBlock(*block));
-      found = m.get();
-      if (cache.size() < kMaxCachedPolicies) {
-        cache.push_back(std::move(m));
-      } else {
-        own_masks_.push_back(std::move(m));  // the template's cache is full: this call's only
-      }
+  if (!found) return addPolicyEntry(templ);
+  skip.recent[SkipPolicy::recentSlot(templ)] = {&templ, found};
+  return *found;
+}
+
+// The template's cache entry for this call's policy, made if it has none; recorded in the
+// policy (or in this call, for an entry the full cache left to it).
+SkipMask& Exec::addPolicyEntry(const Template& templ) {
+  std::vector<std::unique_ptr<SkipMask>>& cache = templ.skipMasks();
+  auto matches = [&](const SkipMask& m) {
+    return m.only == skip.only && m.scope == skip.scope && m.names == skip.names;
+  };
+  size_t index = 0;
+  while (index < cache.size() && !matches(*cache[index])) ++index;
+  if (index == cache.size()) {
+    auto m =
+        std::make_unique<SkipMask>(SkipMask{skip.only, skip.scope, skip.names, {}, {}, {}, {}});
+    for (const BlockStmt* block : templ.blocks()) {
+      m->skipped.push_back(skip.skipsBlock(*block));
+      if (!m->skipped.back()) m->kept.push_back(block);
     }
-    masks_.emplaceBack(&templ, found);
+    if (cache.size() >= kMaxCachedPolicies) {  // the template's cache is full: this call's only
+      SkipMask* own = own_masks_.emplace_back(std::move(m)).get();
+      own_found_.emplaceBack(&templ, own);
+      return *own;
+    }
+    cache.push_back(std::move(m));
   }
-  last_template_ = &templ;
-  last_mask_ = found;
+  SkipMask* found = cache[index].get();
+  skip.masks.emplaceBack(&templ, found);
+  skip.recent[SkipPolicy::recentSlot(templ)] = {&templ, found};
   return *found;
 }
 
@@ -193,25 +176,10 @@ void Exec::adopt(Frame* frame) {
   }
 }
 
-void Exec::checkStack() const {
-  auto here = reinterpret_cast<uintptr_t>(__builtin_frame_address(0));
-  size_t used = stack_base_ > here ? stack_base_ - here : here - stack_base_;
-  if (used > kStackBudget) fail("template recursion is too deep");
-}
+void Exec::failStack() { fail("template recursion is too deep"); }
 
-CallGuard::CallGuard(Exec& ex, const Template* tmpl) : ex_(ex), saved_(ex.tmpl) {
-  if (ex.depth >= kMaxDepth) {
-    fail("maximum template recursion depth (" + std::to_string(kMaxDepth) + ") exceeded");
-  }
-  ex.checkStack();
-  ++ex.depth;
-  ex.step();
-  ex.tmpl = tmpl;
-}
-
-CallGuard::~CallGuard() {
-  --ex_.depth;
-  ex_.tmpl = saved_;
+void CallGuard::failDepth() {
+  fail("maximum template recursion depth (" + std::to_string(kMaxDepth) + ") exceeded");
 }
 
 void MacroObject::repr(std::string& out) const {
@@ -259,8 +227,7 @@ bool ModuleObject::getAttr(std::string_view name, Value& out) const {
   return false;
 }
 
-const Value* ModuleObject::findExport(const std::string* name, size_t& hint) const {
-  if (hint < exports_.size() && exports_[hint].first == name) return &exports_[hint].second;
+const Value* ModuleObject::scanExports(const std::string* name, size_t& hint) const {
   for (size_t i = 0; i < exports_.size(); ++i) {
     if (exports_[i].first == name) {
       hint = i;

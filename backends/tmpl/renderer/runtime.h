@@ -3,6 +3,7 @@
 // slots, and the objects templates can hold (macros, `loop`, modules, `super`).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -25,6 +26,17 @@ struct SkipPolicy {
   std::vector<const std::string*> names;  // always skipped
   const std::string* only = nullptr;      // renderBlock: skip every name in `scope` but this
   const std::vector<const std::string*>* scope = nullptr;  // sorted by address
+
+  /// The masks of this policy found so far, by template (each in its template's cache). An
+  /// environment keeps renderBlock's policies, so a render finds them here without comparing
+  /// the policies of a template's cache.
+  mutable SmallVector<std::pair<const Template*, SkipMask*>, 8> masks;
+  /// The same, by a hash of the template's address, as the last lookups left them.
+  static constexpr size_t kRecentSlots = 16;
+  mutable std::array<std::pair<const Template*, SkipMask*>, kRecentSlots> recent{};
+  static size_t recentSlot(const Template& templ) {
+    return (reinterpret_cast<uintptr_t>(&templ) >> 6) % kRecentSlots;
+  }
 
   bool skips(const std::string* name) const;
   bool skipsBlock(const BlockStmt& block) const {
@@ -59,7 +71,13 @@ class Context final : public Object {
 
   /// Template-level variables, then the parent's, then globals; `missing` otherwise.
   Value resolve(const std::string* name, size_t hash, const Registry& registry) const;
-  void setVar(const std::string* name, const Value& value);
+  /// Inline: most names are new to the context (the filter below says so without a scan).
+  void setVar(const std::string* name, const Value& value) {
+    uint64_t bit = nameBit(name);
+    if (names_ & bit) return replaceVar(name, value);
+    names_ |= bit;
+    vars_.emplace_back(name, value);
+  }
   void exportName(const std::string* name);
   void unexportName(const std::string* name) {
     if (!exported_.empty()) unexportListed(name);  // imports at the top of a root: nothing yet
@@ -74,6 +92,7 @@ class Context final : public Object {
 
  private:
   const Value* find(const std::string* name, size_t hash) const;
+  void replaceVar(const std::string* name, const Value& value);
   void unexportListed(const std::string* name);
   /// One bit per interned name (by address): `names_` has the bits of every name in `vars_`
   /// and `locals_`, so most lookups of a name that is not there skip both scans.
@@ -97,8 +116,14 @@ class Frame final : public Object {
  public:
   static Ref<Frame> make(Frame* parent, Context* context, uint16_t num_slots);
   /// Constructs a frame in `memory` (room for the slots after it); see FrameHolder.
-  static Frame* placeAt(void* memory, Frame* parent, Context* context, uint16_t num_slots);
-  ~Frame() override;
+  static Frame* placeAt(void* memory, Frame* parent, Context* context, uint16_t num_slots) {
+    auto* frame = new (memory) Frame(parent, context, num_slots);
+    for (uint16_t i = 0; i < num_slots; ++i) new (frame->slots() + i) Value();
+    return frame;
+  }
+  ~Frame() override {
+    for (uint16_t i = 0; i < num_slots_; ++i) slots()[i].~Value();
+  }
   static void operator delete(void* p) { ::operator delete(p); }
 
   Value& slot(SlotRef ref) {
@@ -127,8 +152,19 @@ class Frame final : public Object {
 /// beyond the scope (no macro defined at that level or below) and it is small.
 class FrameHolder {
  public:
-  FrameHolder(Exec& ex, Frame* parent, Context* context, const FrameLayout& layout);
-  ~FrameHolder();
+  // Inline: every macro call, block, loop and template run makes one.
+  FrameHolder(Exec& ex, Frame* parent, Context* context, const FrameLayout& layout) {
+    static_assert(sizeof(storage_) >= sizeof(Frame) + kInlineSlots * sizeof(Value));
+    if (layout.capturable || layout.num_slots > kInlineSlots) {
+      placeOnHeap(ex, parent, context, layout);
+      return;
+    }
+    frame_ = Frame::placeAt(storage_, parent, context, layout.num_slots);
+    frame_->retain();  // owned by this holder: never deleted through a reference count
+  }
+  ~FrameHolder() {
+    if (!heap_) frame_->~Frame();
+  }
   FrameHolder(const FrameHolder&) = delete;
   FrameHolder& operator=(const FrameHolder&) = delete;
   Frame* get() const { return frame_; }
@@ -137,6 +173,7 @@ class FrameHolder {
 
  private:
   static constexpr size_t kInlineSlots = 12;
+  void placeOnHeap(Exec& ex, Frame* parent, Context* context, const FrameLayout& layout);
   Frame* frame_;
   Ref<Frame> heap_;
   alignas(std::max_align_t) unsigned char storage_[2 * sizeof(void*) + 16 +
@@ -172,21 +209,25 @@ class Exec {
   /// While positive, adopted objects belong to the environment's module cache.
   int module_depth = 0;
   /// Raises Fault when the native stack is close to exhaustion.
-  void checkStack() const;
-  /// This call's default modules, by template (a cache in front of the environment's).
-  SmallVector<std::pair<const Template*, Value>, 4> modules;
+  void checkStack() const {
+    auto here = reinterpret_cast<uintptr_t>(__builtin_frame_address(0));
+    size_t used = stack_base_ > here ? stack_base_ - here : here - stack_base_;
+    if (used > kStackBudget) failStack();
+  }
   /// Which blocks of `templ` this call's skip policy removes, by BlockStmt::index.
   const std::vector<char>& skipMask(const Template& templ) { return policyEntry(templ).skipped; }
   /// The per-(template, skip policy) cache entry (skipped blocks, default module).
   SkipMask& policyEntry(const Template& templ) {
-    return last_template_ == &templ ? *last_mask_ : findPolicyEntry(templ);
+    const auto& [recent, mask] = skip.recent[SkipPolicy::recentSlot(templ)];
+    return recent == &templ ? *mask : findPolicyEntry(templ);
   }
 
  private:
+  static constexpr size_t kStackBudget = size_t{3} << 20;
+  [[noreturn]] static void failStack();
   SkipMask& findPolicyEntry(const Template& templ);
-  SmallVector<std::pair<const Template*, SkipMask*>, 8> masks_;
-  const Template* last_template_ = nullptr;
-  SkipMask* last_mask_ = nullptr;
+  SkipMask& addPolicyEntry(const Template& templ);
+  SmallVector<std::pair<const Template*, SkipMask*>, 2> own_found_;  // masks of own_masks_
   std::vector<std::unique_ptr<SkipMask>> own_masks_;
   static constexpr size_t kMaxCachedPolicies = 256;
 
@@ -202,12 +243,24 @@ class Exec {
 /// Enters a template, macro or block: bounds the depth and switches the error location.
 class CallGuard {
  public:
-  CallGuard(Exec& ex, const Template* tmpl);
-  ~CallGuard();
+  // Inline: every macro call, block, include and loop-free template run passes here.
+  CallGuard(Exec& ex, const Template* tmpl) : ex_(ex), saved_(ex.tmpl) {
+    if (ex.depth >= kMaxDepth) failDepth();
+    ex.checkStack();
+    ++ex.depth;
+    ex.step();
+    ex.tmpl = tmpl;
+  }
+  ~CallGuard() {
+    --ex_.depth;
+    ex_.tmpl = saved_;
+  }
   CallGuard(const CallGuard&) = delete;
   CallGuard& operator=(const CallGuard&) = delete;
 
  private:
+  static constexpr int kMaxDepth = 200;
+  [[noreturn]] static void failDepth();
   Exec& ex_;
   const Template* saved_;
 };
@@ -273,12 +326,17 @@ class ModuleObject final : public Object {
   bool getAttr(std::string_view name, Value& out) const override;
   /// The export `name` (interned) or nullptr; `hint` is where to look first, and is set to
   /// where the name was found.
-  const Value* findExport(const std::string* name, size_t& hint) const;
+  const Value* findExport(const std::string* name, size_t& hint) const {
+    if (hint < exports_.size() && exports_[hint].first == name) return &exports_[hint].second;
+    return scanExports(name, hint);
+  }
   const std::string& body() const { return body_; }
   const Template* tmpl() const { return tmpl_; }
   const std::vector<std::pair<const std::string*, Value>>& exports() const { return exports_; }
 
  private:
+  const Value* scanExports(const std::string* name, size_t& hint) const;
+
   const Template* tmpl_;
   std::vector<std::pair<const std::string*, Value>> exports_;
   std::string body_;

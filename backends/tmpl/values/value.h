@@ -119,14 +119,28 @@ class Value {
   ~Value() {
     if (counted()) obj_->release();
   }
+  // Assignments take the new value first and release the old one last: the old one may own
+  // `other` (`v = v[0]`).
   Value& operator=(const Value& other) noexcept {
-    Value copy(other);
-    swap(copy);
+    if (other.counted()) other.obj_->retain();
+    const Object* old = counted() ? obj_ : nullptr;
+    kind_ = other.kind_;
+    flags_ = other.flags_;
+    aux_ = other.aux_;
+    i_ = other.i_;
+    if (old) old->release();
     return *this;
   }
   Value& operator=(Value&& other) noexcept {
-    Value moved(std::move(other));
-    swap(moved);
+    if (this == &other) return *this;
+    const Object* old = counted() ? obj_ : nullptr;
+    kind_ = other.kind_;
+    flags_ = other.flags_;
+    aux_ = other.aux_;
+    i_ = other.i_;
+    other.kind_ = Kind::Undefined;
+    other.flags_ = 0;
+    if (old) old->release();
     return *this;
   }
   void swap(Value& other) noexcept {

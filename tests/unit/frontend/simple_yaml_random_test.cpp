@@ -1,6 +1,7 @@
 // The simple YAML reader against yaml-cpp on random block documents (seeded, so every run
 // sees the same ones): keys and scalars of every style, flow collections, nested and
-// indentless sequences, empty values, comments and blank lines at any indentation, and now and
+// indentless sequences, empty values, comments and blank lines at any indentation, flow
+// collections over several lines, and now and
 // then a perturbation (a tab, a carriage return, a deeper line, a missing space). Whatever the
 // reader does not give up on must be yaml-cpp's tree exactly.
 #include <doctest/doctest.h>
@@ -107,6 +108,7 @@ class RandomYaml {
     int n = pick(4);
     for (int i = 0; i < n; ++i) {
       if (i > 0) s += chance(8) ? "," : ", ";
+      if (chance(6)) s += lineBreakInFlow();
       if (is_map) {
         s += key() + (chance(20) ? ":" : ": ");
         if (!chance(5)) s += flow(depth + 1);
@@ -118,6 +120,15 @@ class RandomYaml {
     if (chance(40)) s += ", ";
     s += is_map ? "}" : "]";
     return s;
+  }
+
+  /// A line break inside a flow collection, now and then with a blank or comment line, at
+  /// any indentation (the reader reads only lines deeper than the block around them).
+  std::string lineBreakInFlow() {
+    std::string s = "\n";
+    if (chance(10)) s += "\n";
+    if (chance(20)) s += "  # note\n";
+    return s + std::string(pick(12), ' ');
   }
 
   void lineEnd() {

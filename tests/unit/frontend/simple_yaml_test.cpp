@@ -123,6 +123,15 @@ TEST_CASE("flow collections") {
   checkRead("a: [x y, z ,w]\nb: {k: [[l]], m: {n: o}}\n");
 }
 
+TEST_CASE("flow collections over several lines") {
+  checkRead("a: [x,\n  y]\n");
+  checkRead(
+      "s:\n  - A: {t: X,\n         p: {n: 1, o: [a,\n\n               b]},\n     r: ,\n      z: "
+      "}\n");
+  checkRead("a: {\n  b: 1}\nc: [\n d]\n");
+  checkRead("- {a: 1,\n   b: 2}\n- [x,   \n y]\n");
+}
+
 TEST_CASE("what the reader leaves to yaml-cpp") {
   checkGivesUp("a: 1\r\nb: 2\r\n");
   checkGivesUp(
@@ -137,7 +146,12 @@ TEST_CASE("what the reader leaves to yaml-cpp") {
   checkGivesUp("a: foo\n  bar\n");
   checkGivesUp("a: x\n    # a deeper comment continues a plain scalar\nb: 1\n");
   checkGivesUp("a: 'x\n  y'\n");
-  checkGivesUp("a: [x,\n  y]\n");
+  checkGivesUp("a: [x\n  , y]\n");
+  checkGivesUp("a: [x, # comment\n  y]\n");
+  checkGivesUp("a: [x,\n  # comment\n  y]\n");
+  checkGivesUp("a:\n  b: [x,\n  y]\n");
+  checkGivesUp("a: [x,\ny]\n");
+  checkGivesUp("a: {b:\n  c}\n");
   checkGivesUp("a: [x, ]\n");
   checkGivesUp("a: [k: v]\n");
   checkGivesUp("a: 1\na: 2\n");

@@ -11,11 +11,11 @@
 namespace smachac::backends {
 namespace {
 
-std::optional<std::vector<OutputFile>> emitIrText(const ir::Module& m, EmitContext& ctx) {
+std::optional<std::vector<OutputFile>> emitIrText(ir::Module&& m, EmitContext& ctx) {
   return std::vector<OutputFile>{{"", ir::printModule(m, ctx.sources)}};
 }
 
-std::optional<std::vector<OutputFile>> emitIrJson(const ir::Module& m, EmitContext& ctx) {
+std::optional<std::vector<OutputFile>> emitIrJson(ir::Module&& m, EmitContext& ctx) {
   return std::vector<OutputFile>{{"", ir::moduleToJson(m, ctx.sources)}};
 }
 

@@ -44,7 +44,10 @@ struct EmitContext {
   const EmitOptions& options;
 };
 
-using EmitFn = std::optional<std::vector<OutputFile>> (*)(const ir::Module&, EmitContext&);
+/// A target takes the module: it may free it as soon as it no longer reads it (the SMACH
+/// target frees the IR before its base render, so that a big script's IR and its generated code
+/// are not held at the same time).
+using EmitFn = std::optional<std::vector<OutputFile>> (*)(ir::Module&&, EmitContext&);
 
 /// The template blocks a SMACH-shaped target (smach, cpp) leaves out: the comment blocks
 /// without -c, the introspection server and its spin without -i.

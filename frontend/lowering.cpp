@@ -184,7 +184,7 @@ void Lowering::lowerContainer(const ir::Name& name, Value& vars, StateId parent,
     return;
   }
   const ir::State& container = module_.state(id);
-  Level child{container.params, level.depth + 1};
+  Level child{container.params.copy(), level.depth + 1};
   if (!container.included_from.empty()) child.params = behaviorParams(container.params, id);
   lowerStates(*vars.find("states"), id, child, includes);
 }
@@ -221,8 +221,8 @@ std::vector<ir::Name> Lowering::callerKeys(const Value& caller) {
   return keys;
 }
 
-std::optional<Value> Lowering::behaviorParams(const std::optional<Value>& params, StateId scope) {
-  if (!params || !params->isMap()) return params;
+std::optional<Value> Lowering::behaviorParams(const ir::Boxed<Value>& params, StateId scope) {
+  if (!params || !params->isMap()) return params.copy();
   Value marked = *params;
   for (ir::MapEntry& e : marked.asMap()) {
     e.value.behavior_param = module_.addBehaviorParam(scope, e.key);

@@ -96,7 +96,7 @@ class Lowering {
 
   /// The params of a behavior's root (the script's or a sub-script state's) as its children
   /// inherit them: each value marked as that behavior's parameter.
-  std::optional<Value> behaviorParams(const std::optional<Value>& params, StateId scope);
+  std::optional<Value> behaviorParams(const ir::Boxed<Value>& params, StateId scope);
 
   /// Cycle and depth checks; pushes the sub-script on `includes`.
   bool enterInclude(const ir::Name& script, const SubScriptState& sub,

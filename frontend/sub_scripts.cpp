@@ -36,9 +36,9 @@ bool isRegularFile(const std::string& path) {
 
 std::vector<std::string> SubScriptLoader::candidates(const ir::Name& script) const {
   std::vector<std::string> names{script.text};
-  if (!script.text.ends_with(".yml")) names.push_back(script.text + ".yml");
+  if (!script.text.str().ends_with(".yml")) names.push_back(script.text + ".yml");
   std::vector<std::string> paths;
-  if (fs::path(script.text).is_absolute()) {
+  if (fs::path(script.text.str()).is_absolute()) {
     for (const std::string& n : names) paths.push_back(n);
     return paths;
   }

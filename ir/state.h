@@ -7,15 +7,17 @@
 #include <string>
 #include <vector>
 
+#include "ir/boxed.h"
 #include "ir/ids.h"
 #include "ir/state_kind.h"
+#include "ir/symbol.h"
 #include "ir/value.h"
 
 namespace smachac::ir {
 
-/// A name as written in the script, with its location.
+/// A name as written in the script, with its location (24 bytes: a big script holds millions).
 struct Name {
-  std::string text;
+  Symbol text;
   SourceLoc loc;
 };
 
@@ -79,10 +81,10 @@ struct State {
   std::vector<Transition> transitions;
   std::vector<Remap> remapping;
   std::vector<Argument> userdata;
-  std::optional<Value> params;  ///< a map, after inheritance
+  Boxed<Value> params;  ///< a map, after inheritance
   std::vector<Argument> callbacks;
   std::vector<OutcomeMapEntry> outcome_map;
-  std::optional<Name> default_outcome;
+  Boxed<Name> default_outcome;
   std::vector<Argument> args;            ///< every other key, in script order
   std::vector<Inclusion> included_from;  ///< innermost first; empty if written in place
 

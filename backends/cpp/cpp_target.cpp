@@ -14,7 +14,7 @@ generator::TemplatePath templatePath(const std::vector<std::string>& template_di
   return {template_dirs, {"cpp/"}, templates::builtinTemplates()};
 }
 
-std::optional<std::vector<OutputFile>> emitCpp(const ir::Module& module, EmitContext& context) {
+std::optional<std::vector<OutputFile>> emitCpp(ir::Module&& module, EmitContext& context) {
   generator::TemplatePath path = templatePath(context.options.template_dirs);
   generator::ValueConverter converter;
   auto env = std::make_unique<tmpl::Environment>(path.dirs, path.builtin_sets, path.builtins);

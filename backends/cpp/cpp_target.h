@@ -16,7 +16,7 @@
 
 namespace smachac::backends::cpp {
 
-std::optional<std::vector<OutputFile>> emitCpp(const ir::Module& module, EmitContext& context);
+std::optional<std::vector<OutputFile>> emitCpp(ir::Module&& module, EmitContext& context);
 
 /// The template search path of the target: -I directories, then the built-in `cpp/` set.
 generator::TemplatePath templatePath(const std::vector<std::string>& template_dirs);

@@ -31,7 +31,7 @@ std::string dotString(const std::string& text) {
 
 }  // namespace
 
-std::optional<std::vector<OutputFile>> emitDot(const ir::Module& module, EmitContext& context) {
+std::optional<std::vector<OutputFile>> emitDot(ir::Module&& module, EmitContext& context) {
   tmpl::Environment env(context.options.template_dirs, {"dot/"}, templates::builtinTemplates());
   env.addFilter("dotstr", [](const tmpl::Value& input, const tmpl::CallArgs&) {
     return tmpl::Value::string(dotString(tmpl::str(input)));

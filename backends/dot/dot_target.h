@@ -12,6 +12,6 @@
 
 namespace smachac::backends::dot {
 
-std::optional<std::vector<OutputFile>> emitDot(const ir::Module& module, EmitContext& context);
+std::optional<std::vector<OutputFile>> emitDot(ir::Module&& module, EmitContext& context);
 
 }  // namespace smachac::backends::dot

@@ -64,8 +64,8 @@ class Builder {
     Value v = Value::newDict();
     v.dict().setString("id", Value::string(nodeId(id)));
     v.dict().setString("name", Value::string(s.name.text));
-    v.dict().setString("template",
-                       Value::string(s.template_name ? s.template_name->text : std::string()));
+    v.dict().setString(
+        "template", Value::string(s.template_name ? s.template_name->text.str() : std::string()));
     v.dict().setString("kind", Value::string(std::string(ir::stateKindName(s.kind))));
     v.dict().setString("flagged", Value::boolean(flagged_.contains(id.index)));
     v.dict().setString("entry", Value::string(entry(id)));

@@ -64,7 +64,7 @@ generator::TemplatePath templatePath(const std::vector<std::string>& template_di
   return {template_dirs, {"flexbe/"}, templates::builtinTemplates()};
 }
 
-std::optional<std::vector<OutputFile>> emitFlexbe(const ir::Module& module, EmitContext& context) {
+std::optional<std::vector<OutputFile>> emitFlexbe(ir::Module&& module, EmitContext& context) {
   generator::TemplatePath path = templatePath(context.options.template_dirs);
   generator::ValueConverter converter;
   tmpl::Environment env(path.dirs, path.builtin_sets, path.builtins);

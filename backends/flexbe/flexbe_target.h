@@ -16,7 +16,7 @@
 
 namespace smachac::backends::flexbe {
 
-std::optional<std::vector<OutputFile>> emitFlexbe(const ir::Module& module, EmitContext& context);
+std::optional<std::vector<OutputFile>> emitFlexbe(ir::Module&& module, EmitContext& context);
 
 /// The template search path of the target: -I directories, then the built-in `flexbe/` set.
 generator::TemplatePath templatePath(const std::vector<std::string>& template_dirs);

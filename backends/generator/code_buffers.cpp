@@ -37,9 +37,9 @@ std::string joinSnippets(const Snippets& snippets) {
 }
 
 /// SMACHA's join, one snippet at a time: the snippet and a newline.
-void appendSnippet(std::string& joined, std::string_view snippet) {
+void appendSnippet(ChunkedText& joined, std::string_view snippet) {
   joined.append(snippet);
-  joined += '\n';
+  joined.append("\n");
 }
 
 tmpl::Value stringValue(std::string text, bool strip) {
@@ -76,12 +76,15 @@ void CodeBuffers::insert(size_t buffer, std::string snippet, std::string_view co
 
 std::string CodeBuffers::joined(size_t buffer) const {
   const Buffer& b = buffers_[buffer];
-  return kSpecs[buffer].insertion == Insertion::Prepend ? joinSnippets(b.prepended) : b.joined;
+  return kSpecs[buffer].insertion == Insertion::Prepend ? joinSnippets(b.prepended)
+                                                        : b.joined.joined();
 }
 
 std::vector<std::pair<std::string, std::string>> CodeBuffers::joinedEntries(size_t buffer) const {
   std::vector<std::pair<std::string, std::string>> out;
-  for (const Keyed& entry : buffers_[buffer].keyed) out.emplace_back(entry.container, entry.joined);
+  for (const Keyed& entry : buffers_[buffer].keyed) {
+    out.emplace_back(entry.container, entry.joined.joined());
+  }
   return out;
 }
 
@@ -99,7 +102,7 @@ tmpl::Value CodeBuffers::take(size_t buffer, bool strip) {
   if (kSpecs[buffer].kind == BufferKind::Keyed) {
     tmpl::Value dict = tmpl::Value::newDict();
     for (Keyed& entry : b.keyed) {
-      dict.dict().setString(entry.container, stringValue(std::move(entry.joined), strip));
+      dict.dict().setString(entry.container, stringValue(entry.joined.take(), strip));
     }
     b.keyed.clear();
     return dict;
@@ -109,7 +112,7 @@ tmpl::Value CodeBuffers::take(size_t buffer, bool strip) {
     b.prepended.clear();
     return stringValue(std::move(code), strip);
   }
-  return stringValue(std::exchange(b.joined, std::string()), strip);
+  return stringValue(b.joined.take(), strip);
 }
 
 void stripInPlace(std::string& text) {

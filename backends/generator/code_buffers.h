@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "backends/generator/chunked_text.h"
 #include "backends/tmpl/values/value.h"
 
 namespace smachac::generator {
@@ -37,7 +38,7 @@ std::span<const BufferSpec, kBufferCount> bufferSpecs();
 std::optional<size_t> bufferIndex(std::string_view name);
 
 /// The snippets of every buffer at one level of the script (the root or a container). An
-/// appending buffer keeps its snippets already joined (one string that grows, rather than a
+/// appending buffer keeps its snippets already joined (a ChunkedText that grows, rather than a
 /// string per snippet with the slack of its render), which the base render then takes whole.
 class CodeBuffers {
  public:
@@ -56,10 +57,10 @@ class CodeBuffers {
  private:
   struct Keyed {
     std::string container;
-    std::string joined;
+    ChunkedText joined;
   };
   struct Buffer {
-    std::string joined;                 ///< an appending list buffer's snippets, joined
+    ChunkedText joined;                 ///< an appending list buffer's snippets, joined
     std::deque<std::string> prepended;  ///< a prepending list buffer's snippets, latest first
     std::vector<Keyed> keyed;
   };

@@ -1,9 +1,14 @@
 // The recursive walk: root level, leaves, containers, and the base render.
 #include "backends/generator/generator.h"
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <initializer_list>
 #include <set>
 #include <tuple>
+#include <utility>
 
 #include "backends/generator/code_buffers.h"
 #include "backends/generator/state_uuid.h"
@@ -33,13 +38,21 @@ tmpl::Value str(std::string_view text) { return tmpl::Value::string(std::string(
 
 const std::string& templateText(const ir::State& state) {
   static const std::string kNone;
-  return state.template_name ? state.template_name->text : kNone;
+  return state.template_name ? state.template_name->text.str() : kNone;
 }
 
 class Generator {
  public:
   Generator(const ir::Module& module, GeneratorContext& context)
       : module_(module),
+        ctx_(context),
+        runner_(context.env, context.path, context.skip_blocks),
+        files_(context.sources, context.path.builtins) {}
+
+  /// A generator that owns the module and frees it before the base render.
+  Generator(ir::Module&& module, GeneratorContext& context)
+      : owned_(std::move(module)),
+        module_(*owned_),
         ctx_(context),
         runner_(context.env, context.path, context.skip_blocks),
         files_(context.sources, context.path.builtins) {}
@@ -51,8 +64,12 @@ class Generator {
     Level level = rootLevel(root);
     if (!guarded(root, [&] { seedFromBase(*base, root, level); })) return std::nullopt;
     processChildren(root, level);
+    tmpl::Value base_variables = rootVariables(root);
+    RenderNote note = noteOf(root);
+    releaseModule();  // neither `root` nor `module_` is read past this point
+    addBuffers(base_variables, level);
     std::string code;
-    guarded(root, [&] { code = runner_.renderBase(*base, baseVariables(root, level)); });
+    guardedWith([&] { return note; }, [&] { code = runner_.renderBase(*base, base_variables); });
     if (failed_) return std::nullopt;
     code += '\n';  // stripping left the capacity for it: no copy of the whole module
     return code;
@@ -97,19 +114,23 @@ class Generator {
     }
   }
 
-  /// The base template's variables; the root level's buffers are moved into them.
-  tmpl::Value baseVariables(const ir::State& root, Level& level) {
+  /// The base template's variables from the script's root.
+  tmpl::Value rootVariables(const ir::State& root) {
     tmpl::Value vars = tmpl::Value::newDict();
     vars.dict().setString("name", str(root.name.text));
     copyRootKeys(root,
                  {"manifest", "function_name", "node_name", "outcomes", "userdata", "input_keys",
                   "output_keys", "import_modules", "from_imports"},
                  vars);
+    return vars;
+  }
+
+  /// The root level's buffers, moved into the base template's variables, then its variables.
+  static void addBuffers(tmpl::Value& vars, Level& level) {
     for (size_t b = 0; b < kBufferCount; ++b) {
       vars.dict().setString(bufferSpecs()[b].name, level.buffers.take(b, /*strip=*/true));
     }
     updateDict(vars, level.vars);
-    return vars;
   }
 
   void processChildren(const ir::State& container, Level& level) {
@@ -232,10 +253,37 @@ class Generator {
     return std::nullopt;
   }
 
-  /// Runs `body`; a template error becomes a diagnostic (each distinct error once) with a
-  /// note at the state whose template raised it.
+  /// Where a template error's note points: the state whose template raised it.
+  struct RenderNote {
+    SourceLoc where;
+    std::string template_text;
+    std::string state_name;
+  };
+
+  static RenderNote noteOf(const ir::State& state) {
+    return {state.template_name ? state.template_name->loc : state.loc, templateText(state),
+            state.name.text};
+  }
+
+  /// An owned module is freed, and its memory given back to the system: a big script's IR is
+  /// about as large as its generated code, which the base render holds twice (in and out).
+  void releaseModule() {
+    if (!owned_) return;
+    owned_.reset();
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
+  }
+
   template <class Body>
   bool guarded(const ir::State& state, Body&& body) {
+    return guardedWith([&] { return noteOf(state); }, body);
+  }
+
+  /// Runs `body`; a template error becomes a diagnostic (each distinct error once) with a
+  /// note made by `make_note`.
+  template <class MakeNote, class Body>
+  bool guardedWith(MakeNote&& make_note, Body&& body) {
     try {
       body();
       return true;
@@ -244,13 +292,14 @@ class Generator {
       auto key = std::make_tuple(e.file(), e.line(), e.column(), e.message());
       if (!reported_errors_.insert(key).second) return false;
       ctx_.diags.emit<DiagKind::TemplateError>(files_.locate(e), ForeignMessage(e.message()));
-      SourceLoc where = state.template_name ? state.template_name->loc : state.loc;
-      ctx_.diags.note<DiagNoteKind::WhileRenderingTemplate>(where, templateText(state),
-                                                            state.name.text);
+      RenderNote note = make_note();
+      ctx_.diags.note<DiagNoteKind::WhileRenderingTemplate>(note.where, note.template_text,
+                                                            note.state_name);
       return false;
     }
   }
 
+  std::optional<ir::Module> owned_;
   const ir::Module& module_;
   GeneratorContext& ctx_;
   TemplateRunner runner_;
@@ -264,6 +313,10 @@ class Generator {
 
 std::optional<std::string> generate(const ir::Module& module, GeneratorContext& context) {
   return Generator(module, context).run();
+}
+
+std::optional<std::string> generate(ir::Module&& module, GeneratorContext& context) {
+  return Generator(std::move(module), context).run();
 }
 
 }  // namespace smachac::generator

@@ -37,4 +37,7 @@ struct GeneratorContext {
 /// The base template's output, stripped, with one final newline; nullopt after errors.
 std::optional<std::string> generate(const ir::Module& module, GeneratorContext& context);
 
+/// The same, taking the module: it is freed once read, before the base render.
+std::optional<std::string> generate(ir::Module&& module, GeneratorContext& context);
+
 }  // namespace smachac::generator

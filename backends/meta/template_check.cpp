@@ -51,10 +51,10 @@ std::set<std::string> givenKeys(const ir::State& s) {
   note(!s.transitions.empty(), "transitions");
   note(!s.remapping.empty(), "remapping");
   note(!s.userdata.empty(), "userdata");
-  note(s.params.has_value(), "params");
+  note(static_cast<bool>(s.params), "params");
   note(!s.callbacks.empty(), "callbacks");
   note(!s.outcome_map.empty(), "outcome_map");
-  note(s.default_outcome.has_value(), "default_outcome");
+  note(static_cast<bool>(s.default_outcome), "default_outcome");
   for (const ir::Argument& a : s.args) keys.insert(a.key.text);
   return keys;
 }

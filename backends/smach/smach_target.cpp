@@ -1,6 +1,8 @@
 // The SMACH target: environment, skip blocks, generator, output file.
 #include "backends/smach/smach_target.h"
 
+#include <utility>
+
 #include "backends/generator/generator.h"
 #include "backends/smach/python_extensions.h"
 #include "templates/builtin_templates.h"
@@ -19,7 +21,7 @@ std::unique_ptr<tmpl::Environment> makeEnvironment(const generator::TemplatePath
   return env;
 }
 
-std::optional<std::vector<OutputFile>> emitSmach(const ir::Module& module, EmitContext& context) {
+std::optional<std::vector<OutputFile>> emitSmach(ir::Module&& module, EmitContext& context) {
   generator::TemplatePath path = templatePath(context.options.template_dirs);
   generator::ValueConverter converter;
   std::unique_ptr<tmpl::Environment> env =
@@ -27,7 +29,7 @@ std::optional<std::vector<OutputFile>> emitSmach(const ir::Module& module, EmitC
   generator::GeneratorContext generator_context{
       *env,          converter, context.sources,
       context.diags, path,      optionalBlocksSkipped(context.options)};
-  std::optional<std::string> code = generator::generate(module, generator_context);
+  std::optional<std::string> code = generator::generate(std::move(module), generator_context);
   if (!code) return std::nullopt;
   return std::vector<OutputFile>{{"", std::move(*code)}};
 }

@@ -15,7 +15,7 @@
 
 namespace smachac::backends::smach {
 
-std::optional<std::vector<OutputFile>> emitSmach(const ir::Module& module, EmitContext& context);
+std::optional<std::vector<OutputFile>> emitSmach(ir::Module&& module, EmitContext& context);
 
 /// The template search path of the target: -I directories, then the built-in sets.
 generator::TemplatePath templatePath(const std::vector<std::string>& template_dirs);

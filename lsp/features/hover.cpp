@@ -158,7 +158,7 @@ std::string paramHover(const ScriptIndex& index, const Occurrence& at) {
   const ir::Module& module = *index.analysis().module;
   const std::string& name = index.symbol(at.symbol).name;
   std::string text = "**param** " + code(name);
-  const std::optional<ir::Value>& params = module.state(at.holder).params;
+  const ir::Boxed<ir::Value>& params = module.state(at.holder).params;
   if (const ir::Value* value = params ? params->find(name) : nullptr) {
     text += ": " + code(ir::Type::ofValue(*value).str()) + " = " + code(ir::formatValue(*value));
   }

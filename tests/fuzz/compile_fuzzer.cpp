@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "backends/meta/template_check.h"
 #include "backends/target_code_check.h"
@@ -41,7 +42,7 @@ void compileTo(const backends::Target& target, ir::Module module, SourceManager&
   if (passes_ok && templates_ok && code_ok) {
     backends::EmitOptions options;
     backends::EmitContext emit{sources, diags, options};
-    target.emit(module, emit);
+    target.emit(std::move(module), emit);
   }
   printEveryFormat(diags, sources);
 }

@@ -122,20 +122,24 @@ int emit(Session& session, const CompileOptions& o, const backends::Target& targ
                                      .flexbe_ros = o.flexbe_ros,
                                      .output = o.output,
                                      .library = std::nullopt};
-  std::string depfile_target = o.output;
+  std::string depfile;
   if (module) {
+    std::string depfile_target = o.output;
     if (library) {
       emit_options.library = libraryNames(*library, module->state(module->root()).name.text);
       depfile_target = inDirectory(library->dir, emit_options.library->source);
     }
+    // Read before the target takes the module (it may free the IR before its last render).
+    if (!o.depfile.empty()) {
+      depfile = depfileText(depfile_target, *module, session.sources(), o.common.template_dirs);
+    }
     backends::EmitContext context{session.sources(), session.diags(), emit_options};
-    files = target.emit(*module, context);
+    files = target.emit(std::move(*module), context);
   }
   session.printDiagnostics();
   if (!files || session.diags().hasErrors()) return session.failureExitCode();
   if (!o.depfile.empty()) {
-    if (std::optional<std::string> error = writeDepfile(
-            o.depfile, depfile_target, *module, session.sources(), o.common.template_dirs)) {
+    if (std::optional<std::string> error = writeFileAtomically(o.depfile, depfile)) {
       std::cerr << "smachac: error: " << *error << "\n";
       return kExitUsageError;
     }

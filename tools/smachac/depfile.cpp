@@ -6,8 +6,6 @@
 #include <set>
 #include <system_error>
 
-#include "tools/smachac/output.h"
-
 namespace smachac::driver {
 namespace {
 
@@ -62,12 +60,6 @@ std::string depfileText(const std::string& output, const ir::Module& module,
   for (const std::string& path : scripts) text += " \\\n  " + escapeForMake(path);
   for (const std::string& path : templates) text += " \\\n  " + escapeForMake(path);
   return text + "\n";
-}
-
-std::optional<std::string> writeDepfile(const std::string& path, const std::string& output,
-                                        const ir::Module& module, const SourceManager& sources,
-                                        const std::vector<std::string>& template_dirs) {
-  return writeFileAtomically(path, depfileText(output, module, sources, template_dirs));
 }
 
 }  // namespace smachac::driver

@@ -4,7 +4,6 @@
 // smachac). Paths are absolute; spaces, `#` and `$` are escaped as Make and Ninja expect.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,10 +16,5 @@ namespace smachac::driver {
 std::string depfileText(const std::string& output, const ir::Module& module,
                         const SourceManager& sources,
                         const std::vector<std::string>& template_dirs);
-
-/// Writes the depfile; returns an error message, or nullopt on success.
-std::optional<std::string> writeDepfile(const std::string& path, const std::string& output,
-                                        const ir::Module& module, const SourceManager& sources,
-                                        const std::vector<std::string>& template_dirs);
 
 }  // namespace smachac::driver

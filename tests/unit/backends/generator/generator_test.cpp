@@ -5,6 +5,9 @@
 #include "backends/generator/generator.h"
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <utility>
 
 #include "frontend/lower.h"
 
@@ -26,6 +29,7 @@ const std::vector<EmbeddedFile> kTemplates = {
      "{% set previous = name %}"},
     {"t/Box.tpl.py", "{% block body %}box {{ name }}({{ body | trim }}){% endblock body %}"},
     {"t/Bad.tpl.py", "{% block body %}{{ missing.attribute }}{% endblock body %}"},
+    {"t/LateBad.tpl.py", "{% if body %}{{ missing.attribute }}{% endif %}"},
 };
 
 struct Run {
@@ -33,7 +37,8 @@ struct Run {
   std::vector<std::string> messages;
 };
 
-Run generateFrom(const std::string& script) {
+/// `consume`: the generator takes the module (and frees it before the base render).
+Run generateFrom(const std::string& script, bool consume = false) {
   SourceManager sources;
   DiagnosticEmitter diags;
   Run run;
@@ -43,8 +48,14 @@ Run generateFrom(const std::string& script) {
   tmpl::Environment env({}, {"t/"}, kTemplates);
   ValueConverter converter;
   GeneratorContext context{env, converter, sources, diags, {{}, {"t/"}, kTemplates}, {}};
-  run.output = generate(*module, context);
-  for (const Diagnostic& d : diags.diagnostics()) run.messages.push_back(d.message);
+  run.output = consume ? generate(std::move(*module), context) : generate(*module, context);
+  for (const Diagnostic& d : diags.diagnostics()) {
+    run.messages.push_back(d.message);
+    for (const DiagNote& note : d.notes) {
+      run.messages.push_back(
+          fmt::format("{}:{}: {}", note.loc.line, note.loc.column, note.message));
+    }
+  }
   return run;
 }
 
@@ -65,6 +76,26 @@ TEST_CASE("blocks flow through buffers into the base; globals persist at their l
         "F[fB\n\n\nfA]"
         "U[ud_A@top]"
         "P[A]\n");
+}
+
+TEST_CASE("a generator that takes the module gives the same code") {
+  const std::string script =
+      "name: top\ntemplate: Base\noutcomes: [done]\nstates:\n"
+      "  - A: {template: Leaf, transitions: {succeeded: B}}\n"
+      "  - B: {template: Leaf, transitions: {succeeded: done}}\n";
+  Run kept = generateFrom(script);
+  Run taken = generateFrom(script, /*consume=*/true);
+  REQUIRE(kept.output.has_value());
+  CHECK(taken.output == kept.output);
+}
+
+TEST_CASE("an error of the base render, after the module is freed, notes the script's root") {
+  Run run = generateFrom("name: top\ntemplate: LateBad\nstates:\n  - A: {template: Leaf}\n",
+                         /*consume=*/true);
+  CHECK_FALSE(run.output.has_value());
+  REQUIRE(run.messages.size() == 2);
+  CHECK(run.messages[0] == "`missing` is undefined");
+  CHECK(run.messages[1] == "2:11: while rendering template `LateBad` for `top`");
 }
 
 TEST_CASE("an unknown template is reported at the script's template value") {

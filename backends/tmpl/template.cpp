@@ -26,6 +26,7 @@ Template::Template(std::string name, std::string origin, std::string_view source
     blocks_ = std::move(parsed.blocks);
     references_ = std::move(parsed.references);
     has_extends_ = parsed.has_extends;
+    names_templates_ = parsed.names_templates;
     deferred_ = std::move(parsed.deferred);
     if (!deferred_.empty()) tokens_ = std::move(lexed);
   } catch (const SyntaxFault& fault) {

@@ -62,6 +62,9 @@ class Template {
   /// String-literal names of the templates it extends, includes or imports, with positions.
   const std::vector<std::pair<std::string, uint32_t>>& references() const { return references_; }
   bool hasExtends() const { return has_extends_; }
+  /// Whether it has an extends, include or import tag (by a literal name or not). One that has
+  /// none renders and exports the same under every skip policy that skips its blocks alike.
+  bool namesTemplates() const { return names_templates_; }
 
   /// 1-based line and column (in characters) of byte offset `pos`.
   std::pair<int, int> lineColumn(uint32_t pos) const;
@@ -82,6 +85,7 @@ class Template {
   std::vector<BlockStmt*> blocks_;
   std::vector<std::pair<std::string, uint32_t>> references_;
   bool has_extends_ = false;
+  bool names_templates_ = false;
   mutable std::vector<std::unique_ptr<SkipMask>> skip_masks_;
   mutable std::vector<Token> tokens_;  // kept while macros are deferred
   mutable std::vector<DeferredMacro> deferred_;

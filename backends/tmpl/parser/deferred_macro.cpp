@@ -4,8 +4,9 @@
 // It does so only where parsing later changes nothing the template shows before that call:
 // the tokens reach the body's `endmacro`; the body has no `block`, `extends`, `include`,
 // `import` or `from` tag (those are recorded template-wide: blocks, references,
-// has_extends); and every filter and test it names is registered (the parser's one error on
-// text that lexes and nests). A macro that fails any of these is parsed at once, as before.
+// has_extends, names_templates); and every filter and test it names is registered (the
+// parser's one error on text that lexes and nests). A macro that fails any of these is parsed
+// at once, as before.
 #include "backends/tmpl/parser/parser.h"
 
 namespace smachac::tmpl {

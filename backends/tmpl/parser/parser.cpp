@@ -260,6 +260,7 @@ Stmt* Parser::parseBlock() {
 // The template name of extends/include/import; string literals are noted as references.
 Expr* Parser::parseTemplateName() {
   Expr* template_name = parseExpression();
+  result_.names_templates = true;
   auto note = [&](const Expr* e) {
     if (e->kind != ExprKind::Const) return;
     const Value& v = static_cast<const ConstExpr*>(e)->value;

@@ -32,6 +32,7 @@ struct ParsedTemplate {
   std::vector<BlockStmt*> blocks;                            // every block, in document order
   std::vector<std::pair<std::string, uint32_t>> references;  // literal names of extends etc.
   bool has_extends = false;
+  bool names_templates = false;         // any extends, include or import, by a literal name or not
   std::vector<DeferredMacro> deferred;  // macros whose signature and body wait for a call
 };
 

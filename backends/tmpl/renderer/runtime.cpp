@@ -116,15 +116,33 @@ SkipMask& Exec::findPolicyEntry(const Template& templ) {
   return *found;
 }
 
+// The index in `cache` of the entry for this call's policy: the entry made for it or, for a
+// template that names no other template, one made for a policy that skips its blocks alike
+// (what such a template renders and exports depends on nothing else); cache.size() if none.
+size_t Exec::cachedPolicyIndex(const Template& templ,
+                               const std::vector<std::unique_ptr<SkipMask>>& cache) const {
+  for (size_t i = 0; i < cache.size(); ++i) {
+    const SkipMask& m = *cache[i];
+    if (m.only == skip.only && m.scope == skip.scope && m.names == skip.names) return i;
+  }
+  if (templ.namesTemplates()) return cache.size();
+  auto skipsAlike = [&](const SkipMask& m) {
+    for (size_t b = 0; b < templ.blocks().size(); ++b) {
+      if (m.skipped[b] != static_cast<char>(skip.skipsBlock(*templ.blocks()[b]))) return false;
+    }
+    return true;
+  };
+  for (size_t i = 0; i < cache.size(); ++i) {
+    if (skipsAlike(*cache[i])) return i;
+  }
+  return cache.size();
+}
+
 // The template's cache entry for this call's policy, made if it has none; recorded in the
 // policy (or in this call, for an entry the full cache left to it).
 SkipMask& Exec::addPolicyEntry(const Template& templ) {
   std::vector<std::unique_ptr<SkipMask>>& cache = templ.skipMasks();
-  auto matches = [&](const SkipMask& m) {
-    return m.only == skip.only && m.scope == skip.scope && m.names == skip.names;
-  };
-  size_t index = 0;
-  while (index < cache.size() && !matches(*cache[index])) ++index;
+  size_t index = cachedPolicyIndex(templ, cache);
   if (index == cache.size()) {
     auto m =
         std::make_unique<SkipMask>(SkipMask{skip.only, skip.scope, skip.names, {}, {}, {}, {}});

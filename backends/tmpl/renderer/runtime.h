@@ -227,6 +227,8 @@ class Exec {
   [[noreturn]] static void failStack();
   SkipMask& findPolicyEntry(const Template& templ);
   SkipMask& addPolicyEntry(const Template& templ);
+  size_t cachedPolicyIndex(const Template& templ,
+                           const std::vector<std::unique_ptr<SkipMask>>& cache) const;
   SmallVector<std::pair<const Template*, SkipMask*>, 2> own_found_;  // masks of own_masks_
   std::vector<std::unique_ptr<SkipMask>> own_masks_;
   static constexpr size_t kMaxCachedPolicies = 256;

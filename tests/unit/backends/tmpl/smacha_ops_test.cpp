@@ -54,6 +54,23 @@ TEST_CASE("renderBlock renders the whole template with every other block removed
   CHECK(block(*env, "absent") == "before extends\n");
 }
 
+TEST_CASE("an imported module is made under each render's skipped blocks, in any order") {
+  // Lib names no template, so renders that skip its blocks alike share its module; these two
+  // skip its `imports` block differently and must not.
+  const std::vector<std::pair<std::string, std::string>> set = {
+      {"Lib", "{% block imports %}LIB{% endblock %}{% macro f() %}f{% endmacro %}"},
+      {"T",
+       "{% import 'Lib' as lib %}{% block imports %}[{{ lib }}{{ lib.f() }}]{% endblock %}"
+       "{% block body %}({{ lib }}{{ lib.f() }}){% endblock %}"}};
+  auto body_first = makeEnv(set);
+  CHECK(body_first->renderBlock("T", "body", Value::newDict()) == "(f)\n");
+  CHECK(body_first->renderBlock("T", "imports", Value::newDict()) == "[LIBf]\n");
+  CHECK(body_first->renderBlock("T", "body", Value::newDict()) == "(f)\n");
+  auto imports_first = makeEnv(set);
+  CHECK(imports_first->renderBlock("T", "imports", Value::newDict()) == "[LIBf]\n");
+  CHECK(imports_first->renderBlock("T", "body", Value::newDict()) == "(f)\n");
+}
+
 TEST_CASE("renderBlock strips with Python's whitespace set and appends a newline") {
   auto env = makeEnv({{"t", "\u3000 {% block b %}\n  x  \n{% endblock %}\x0c\n"},
                       {"e", "{% block b %} \n {% endblock %}"}});

@@ -12,7 +12,12 @@
 namespace smachac::ir {
 namespace {
 
-constinit const std::string kEmptyText;
+/// The text of every empty Symbol (made on first use: a Symbol may be made during static
+/// initialisation).
+const std::string& emptyText() {
+  static const std::string kEmpty;
+  return kEmpty;
+}
 
 uint64_t hashText(std::string_view text) {
   uint64_t hash = 14695981039346656037ull;
@@ -63,10 +68,10 @@ SymbolPool& pool() {
 
 }  // namespace
 
-Symbol::Symbol() : text_(&kEmptyText) {}
+Symbol::Symbol() : text_(&emptyText()) {}
 
 const std::string* Symbol::intern(std::string_view text) {
-  return text.empty() ? &kEmptyText : pool().intern(text);
+  return text.empty() ? &emptyText() : pool().intern(text);
 }
 
 }  // namespace smachac::ir

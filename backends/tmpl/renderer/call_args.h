@@ -22,8 +22,10 @@ struct CallArgs {
 };
 
 /// A vector that keeps its first N elements inline (no allocation for short argument lists).
+/// (clang-tidy 14 reports `__i0`, the loop variable of an implicit array initialisation it
+/// makes up for `inline_`, as a name in the wrong style.)
 template <class T, size_t N>
-class SmallVector {
+class SmallVector {  // NOLINT(readability-identifier-naming)
  public:
   template <class... Args>
   void emplaceBack(Args&&... args) {

@@ -254,9 +254,10 @@ void execPrint(Exec& ex, Site& site, const Expr* expr) {
     auto* call = static_cast<const CallExpr*>(expr);
     if (call->callee->kind == ExprKind::Name) {
       Value fn = eval(ex, site, call->callee);
+      const Object* callee = fn.isObject() ? fn.object() : nullptr;
       // MacroObject is final: comparing the type is exact, and cheaper than a dynamic_cast.
-      if (fn.isObject() && typeid(*fn.object()) == typeid(MacroObject)) {
-        auto* macro = static_cast<const MacroObject*>(fn.object());
+      if (callee && typeid(*callee) == typeid(MacroObject)) {
+        auto* macro = static_cast<const MacroObject*>(callee);
         OwnedArgs args;
         evalArgs(ex, site, call->args, args);
         try {

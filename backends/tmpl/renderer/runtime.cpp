@@ -126,14 +126,14 @@ size_t Exec::cachedPolicyIndex(const Template& templ,
     if (m.only == skip.only && m.scope == skip.scope && m.names == skip.names) return i;
   }
   if (templ.namesTemplates()) return cache.size();
-  auto skipsAlike = [&](const SkipMask& m) {
+  auto skips_alike = [&](const SkipMask& m) {
     for (size_t b = 0; b < templ.blocks().size(); ++b) {
       if (m.skipped[b] != static_cast<char>(skip.skipsBlock(*templ.blocks()[b]))) return false;
     }
     return true;
   };
   for (size_t i = 0; i < cache.size(); ++i) {
-    if (skipsAlike(*cache[i])) return i;
+    if (skips_alike(*cache[i])) return i;
   }
   return cache.size();
 }

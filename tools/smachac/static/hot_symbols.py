@@ -6,9 +6,9 @@ them first and in this order, so that a compile faults in fewer pages of code.
     tools/smachac/static/hot_symbols.py BUILD_DIR [SMACHA_ROOT]
 
 Runs BUILD_DIR's smachac under callgrind (symbols not demangled) on `--version` and on every
-script of bench/compare's corpus (SMACHA's public test scripts, default SMACHA_ROOT
-../shared/vendor/smacha), adds up each function's own instructions over the runs, and
-lists the functions most used first. A name that the binary defines more than once (a
+script of bench/compare's corpus (SMACHA's public test scripts; SMACHA_ROOT defaults to the
+one bench/compare finds, anchors.smacha_root()), adds up each function's own instructions
+over the runs, and lists the functions most used first. A name that the binary defines more than once (a
 local clone like `...constprop.0` in many files) is left out: lld would move every
 definition of it, and with each the whole section around it. The list goes stale as the code
 changes; a name it lacks is only placed where the linker would put it anyway.
@@ -22,6 +22,7 @@ import tempfile
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parents[2] / "bench" / "compare"))
+import anchors  # noqa: E402  (bench/compare/anchors.py)
 import corpus  # noqa: E402  (bench/compare/corpus.py)
 
 
@@ -63,7 +64,7 @@ def defined_more_than_once(binary):
 
 def main():
     build = pathlib.Path(sys.argv[1]).resolve()
-    root = sys.argv[2] if len(sys.argv) > 2 else str(HERE.parents[3] / "shared/vendor/smacha")
+    root = sys.argv[2] if len(sys.argv) > 2 else str(anchors.smacha_root())
     smachac = str(build / "tools/smachac/smachac")
     total = collections.Counter()
     with tempfile.TemporaryDirectory() as tmp:

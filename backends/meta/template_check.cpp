@@ -139,7 +139,7 @@ class Checker {
     }
     try {
       std::optional<tmpl::TemplateSource> source = loader_.load(file);
-      if (source && source->text.find("meta") == std::string::npos) return std::nullopt;
+      if (source && source->text().find("meta") == std::string_view::npos) return std::nullopt;
     } catch (const tmpl::Fault&) {  // an unreadable file: the lookup gives nullopt, as before
     }
     return lookUpTemplateMeta(environment(), path_, file);

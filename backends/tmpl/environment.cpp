@@ -9,6 +9,7 @@
 #include <set>
 
 #include "backends/tmpl/environment_impl.h"
+#include "backends/tmpl/renderer/prologue.h"
 #include "backends/tmpl/renderer/render.h"
 #include "ir/support/unicode.h"
 
@@ -38,7 +39,7 @@ const Template& EnvironmentImpl::load(std::string_view name) {
     fail("template `" + std::string(name) + "` not found; looked in " +
          loader_.searchDescription());
   }
-  auto compiled = std::make_unique<Template>(std::string(name), source->origin, source->text,
+  auto compiled = std::make_unique<Template>(std::string(name), source->origin, source->text(),
                                              registry_, source->builtin, source->tokens);
   const Template& result = *compiled;
   templates_.emplace(std::string(name), std::move(compiled));
@@ -82,6 +83,7 @@ const SkipPolicy& EnvironmentImpl::blockPolicy(const Template& tmpl, const std::
     policy = std::make_unique<SkipPolicy>();
     policy->only = only;
     policy->scope = &reachableByAddress(tmpl);
+    policy->keeps_prologue = true;
   }
   return *policy;
 }
@@ -100,6 +102,10 @@ void EnvironmentImpl::addSpareContext(Ref<Context> ctx) {
 void EnvironmentImpl::clearModules() {
   for (const auto& [name, tmpl] : templates_) {
     for (const auto& mask : tmpl->skipMasks()) mask->module = Value();
+  }
+  for (const auto& [key, policy] : block_policies_) {  // prologues hold the modules' values
+    policy->prologue = nullptr;
+    policy->prologue_recorded = false;
   }
 }
 
@@ -135,7 +141,15 @@ std::string renderWith(EnvironmentImpl& env, const Template& tmpl, const Value& 
   Ref<Context> ctx = newContext(ex, tmpl, contextDict(context));
   std::string out;
   out.reserve(256);
-  renderRoot(ex, tmpl, *ctx, out);
+  if (policy.keeps_prologue && !policy.prologue_recorded) {
+    policy.prologue = recordPrologue(ex, tmpl);
+    policy.prologue_recorded = true;
+  }
+  if (std::shared_ptr<const RenderPrologue> prologue = policy.prologue) {
+    replayPrologue(ex, *prologue, *ctx, out);  // held: the context uses its shared variables
+  } else {
+    renderRoot(ex, tmpl, *ctx, out);
+  }
   return out;
 }
 

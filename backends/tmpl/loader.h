@@ -16,10 +16,13 @@
 namespace smachac::tmpl {
 
 struct TemplateSource {
-  std::string origin;  // what errors name: a file path or `<builtin>/smach/State.tpl.py`
-  std::string text;
-  bool builtin = false;  // from the embedded table (text that the build checked compiles)
+  std::string origin;             // what errors name: a file path or `<builtin>/smach/State.tpl.py`
+  std::string read;               // the text of a file or an in-memory template
+  bool builtin = false;           // from the embedded table (text that the build checked compiles)
+  std::string_view builtin_text;  // a built-in template's text: a view of the table
   std::span<const uint32_t> tokens;  // the build's tokens of a built-in template, if any
+
+  std::string_view text() const { return builtin ? builtin_text : std::string_view(read); }
 };
 
 class Loader {

@@ -12,15 +12,20 @@
 namespace smachac::tmpl {
 
 Template::Template(std::string name, std::string origin, std::string_view source,
-                   const Registry& registry, bool defer_macros, std::span<const uint32_t> tokens)
-    : name_(std::move(name)),
-      origin_(std::move(origin)),
-      source_(normalizeSource(source)),
-      registry_(registry) {
+                   const Registry& registry, bool builtin, std::span<const uint32_t> tokens)
+    : name_(std::move(name)), origin_(std::move(origin)), registry_(registry) {
+  std::optional<std::string_view> in_place =
+      builtin ? normalizedInPlace(source) : std::optional<std::string_view>();
+  if (in_place) {
+    source_ = *in_place;
+  } else {
+    owned_source_ = normalizeSource(source);
+    source_ = owned_source_;
+  }
   try {
     std::optional<std::vector<Token>> stored = unpackTokens(tokens, source_);
     std::vector<Token> lexed = stored ? std::move(*stored) : tokenize(source_);
-    ParsedTemplate parsed = parseTemplate(source_, lexed, registry, arena_, defer_macros);
+    ParsedTemplate parsed = parseTemplate(source_, lexed, registry, arena_, builtin);
     analyzeScopes(parsed, root_frame_);
     body_ = std::move(parsed.body);
     blocks_ = std::move(parsed.blocks);
@@ -67,8 +72,7 @@ std::pair<int, int> Template::lineColumn(uint32_t pos) const {
       line_start = i + 1;
     }
   }
-  int column = 1 + static_cast<int>(unicode::length(
-                       std::string_view(source_).substr(line_start, pos - line_start)));
+  int column = 1 + static_cast<int>(unicode::length(source_.substr(line_start, pos - line_start)));
   return {line, column};
 }
 

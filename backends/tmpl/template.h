@@ -43,12 +43,14 @@ class Template {
  public:
   /// Compiles `source`; raises TemplateError (syntax error, unknown filter or test).
   /// `origin` is what errors name (a file path, or `<builtin>/smach/State.tpl.py`).
-  /// With `defer_macros` (built-in templates, whose text is known to compile), top-level
-  /// macros that allow it are parsed on their first call (parser/deferred_macro.cpp).
+  /// A `builtin` template's text is the caller's built-in table, which outlives the template
+  /// and is known to compile: it is read in place (unless normalising changes it, which
+  /// copies it as any other source is), and top-level macros that allow it are parsed on
+  /// their first call (parser/deferred_macro.cpp).
   /// `tokens`, if given, are the build's tokens of `source` (lexer/token_table.h), used
   /// instead of lexing it when they fit it. `registry` must outlive the template.
   Template(std::string name, std::string origin, std::string_view source, const Registry& registry,
-           bool defer_macros = false, std::span<const uint32_t> tokens = {});
+           bool builtin = false, std::span<const uint32_t> tokens = {});
   Template(const Template&) = delete;
   Template& operator=(const Template&) = delete;
 
@@ -77,7 +79,8 @@ class Template {
  private:
   std::string name_;
   std::string origin_;
-  std::string source_;
+  std::string owned_source_;  // the normalised source, unless it is read in place
+  std::string_view source_;
   const Registry& registry_;
   mutable Arena arena_;  // deferred macro bodies are added on their first call
   Body body_;

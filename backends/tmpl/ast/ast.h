@@ -266,6 +266,8 @@ struct ForStmt : Stmt {
   FrameLayout else_frame;
   int loop_slot = -1;                       // slot of `loop` in loopFrame when the body uses it
   std::vector<uint16_t> test_target_slots;  // the loop filter's own slots for the target names
+  /// Whether the loop is `for k, v in name.items() | sort` (loop.cpp; -1 until first run).
+  mutable int8_t sorted_items = -1;
   explicit ForStmt(uint32_t p) : Stmt(StmtKind::For, p) {}
 };
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <initializer_list>
 #include <memory>
+#include <optional>
 
 #include "backends/tmpl/ast/ast_walk.h"
 
@@ -83,13 +84,21 @@ struct Symbols {
     if (!findRef(n)) defineRef(n, {SlotInitKind::Resolve});
   }
 
-  // The branches are copies of this level taken before they ran (Jinja's sym.copy()).
+  // The branches are copies of this level taken before they ran (Jinja's sym.copy()), and
+  // this level is unchanged since: refs and stores only grow at their ends and loads are
+  // changed in place or appended, so each branch begins with this level's entries in the
+  // same order, and only what follows them needs looking up. A null branch ran nothing (an
+  // absent elif or else), which Jinja merges as a plain copy of this level.
   void branchUpdate(std::initializer_list<const Symbols*> branches) {
+    const size_t old_refs = refs.size();
+    const size_t old_loads = loads.size();
+    const size_t old_stores = stores.size();
     std::vector<std::pair<Name, size_t>> counts;
     for (const Symbols* branch : branches) {
+      if (!branch) continue;
       const Symbols& b = *branch;
-      for (Name t : b.stores) {
-        if (stored(t)) continue;
+      for (size_t i = old_stores; i < b.stores.size(); ++i) {
+        Name t = b.stores[i];
         auto it = std::find_if(counts.begin(), counts.end(), [&](auto& c) { return c.first == t; });
         if (it == counts.end()) {
           counts.emplace_back(t, 1);
@@ -99,12 +108,20 @@ struct Symbols {
       }
     }
     for (const Symbols* branch : branches) {
+      if (!branch) continue;
       const Symbols& b = *branch;
-      for (Name r : b.refs) {
-        if (!owns(r)) refs.push_back(r);
+      for (size_t i = old_refs; i < b.refs.size(); ++i) {
+        if (!owns(b.refs[i])) refs.push_back(b.refs[i]);
       }
-      for (const auto& [n, load] : b.loads) setLoad(n, load);
-      for (Name s : b.stores) addStore(s);
+      for (size_t i = old_loads; i < b.loads.size(); ++i) {
+        setLoad(b.loads[i].first, b.loads[i].second);
+      }
+      for (size_t i = old_stores; i < b.stores.size(); ++i) addStore(b.stores[i]);
+    }
+    // Every branch sets every entry this level had, so the last branch's values hold (this
+    // level's own, when that branch ran nothing).
+    if (const Symbols* last = *(branches.end() - 1)) {
+      for (size_t i = 0; i < old_loads; ++i) loads[i].second = last->loads[i].second;
     }
     for (const auto& [n, count] : counts) {
       if (count == branches.size()) continue;
@@ -233,8 +250,7 @@ class Analyzer {
     visitExpr(test, sym);
     Symbols body_sym = sym;
     visitBody(body, body_sym);
-    Symbols unchanged = sym;  // the empty elif and else branches
-    sym.branchUpdate({&body_sym, &unchanged, &unchanged});
+    sym.branchUpdate({&body_sym, nullptr, nullptr});  // no elif or else of its own
   }
 
   void visitStmt(Stmt* stmt, Symbols& sym) {
@@ -247,13 +263,18 @@ class Analyzer {
         visitExpr(s->branches[0].first, sym);
         Symbols body_sym = sym;
         visitBody(s->branches[0].second, body_sym);
-        Symbols elif_sym = sym;
+        std::optional<Symbols> elif_sym;  // copies only for the branches there are
+        if (s->branches.size() > 1) elif_sym.emplace(sym);
         for (size_t i = 1; i < s->branches.size(); ++i) {
-          visitIf(s->branches[i].first, s->branches[i].second, elif_sym);
+          visitIf(s->branches[i].first, s->branches[i].second, *elif_sym);
         }
-        Symbols else_sym = sym;
-        visitBody(s->orelse, else_sym);
-        sym.branchUpdate({&body_sym, &elif_sym, &else_sym});
+        std::optional<Symbols> else_sym;
+        if (!s->orelse.empty()) {
+          else_sym.emplace(sym);
+          visitBody(s->orelse, *else_sym);
+        }
+        sym.branchUpdate(
+            {&body_sym, elif_sym ? &*elif_sym : nullptr, else_sym ? &*else_sym : nullptr});
         return;
       }
       case StmtKind::For:

@@ -48,8 +48,9 @@ class Lexer {
     throw SyntaxFault{static_cast<uint32_t>(pos), std::move(message)};
   }
 
+  // `text` starts at `pos` (a token is its position and length in the source).
   void emit(Tok kind, size_t pos, std::string_view text) {
-    out_.push_back(Token{kind, static_cast<uint32_t>(pos), text});
+    out_.push_back(Token{kind, static_cast<uint32_t>(pos), static_cast<uint32_t>(text.size())});
   }
 
   size_t skipSpace(size_t p) const {
@@ -476,6 +477,12 @@ std::string normalizeSource(std::string_view source) {
   out.append(source.substr(from));
   if (!out.empty() && out.back() == '\n') out.pop_back();
   return out;
+}
+
+std::optional<std::string_view> normalizedInPlace(std::string_view source) {
+  if (source.find('\r') != std::string_view::npos) return std::nullopt;
+  if (!source.empty() && source.back() == '\n') source.remove_suffix(1);
+  return source;
 }
 
 std::vector<Token> tokenize(std::string_view source, const LexerOptions& options) {

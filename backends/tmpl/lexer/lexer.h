@@ -2,6 +2,7 @@
 // (lstrip_blocks, `-`/`+` markers, raw blocks, comments) as SMACHA configures them.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +19,10 @@ struct LexerOptions {
 /// Normalises newlines (\r\n and \r become \n) and drops one trailing newline, as Jinja2
 /// does with keep_trailing_newline=False.
 std::string normalizeSource(std::string_view source);
+
+/// normalizeSource's result as a view of `source`, when there is no carriage return to replace;
+/// nullopt otherwise.
+std::optional<std::string_view> normalizedInPlace(std::string_view source);
 
 /// Tokenises `source` (already normalised). Raises SyntaxFault on lexical errors.
 std::vector<Token> tokenize(std::string_view source, const LexerOptions& options = {});

@@ -1,5 +1,7 @@
-// Tokens of the template language. Token text is a view into the template's (owned,
-// normalised) source; `pos` is the byte offset used for error locations.
+// Tokens of the template language. A token is its kind and where it lies in the template's
+// normalised source: `pos`, the byte offset (also what error locations give), and `length`;
+// its text is read from that source (`textIn`), so a token is 12 bytes and the build's stored
+// tokens (token_table.h) become tokens without a view to make for each.
 #pragma once
 
 #include <cstdint>
@@ -49,10 +51,13 @@ enum class Tok : uint8_t {
 struct Token {
   Tok kind;
   uint32_t pos;
-  std::string_view text;
+  uint32_t length;
 
   bool is(Tok k) const { return kind == k; }
-  bool isName(std::string_view name) const { return kind == Tok::Name && text == name; }
+  /// The token's text in `source`, the normalised source it was made of.
+  std::string_view textIn(std::string_view source) const {
+    return std::string_view(source.data() + pos, length);
+  }
 };
 
 /// How a token is described in error messages (`end of statement block`, `)`, a name...).

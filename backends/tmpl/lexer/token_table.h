@@ -19,7 +19,7 @@ namespace smachac::tmpl {
 /// The words of `tokens` (of a source shorter than 4 GiB, tokens shorter than 16 MiB).
 std::vector<uint32_t> packTokens(const std::vector<Token>& tokens);
 
-/// The tokens of `words`, as views into `source`; nullopt if they do not fit it.
+/// The tokens of `words` (positions in `source`); nullopt if they do not fit it.
 std::optional<std::vector<Token>> unpackTokens(std::span<const uint32_t> words,
                                                std::string_view source);
 

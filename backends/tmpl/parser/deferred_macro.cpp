@@ -37,12 +37,12 @@ std::optional<size_t> Parser::deferrableBodyEnd(size_t first) const {
   int depth = 0;
   for (size_t i = first; i + 1 < tokens_.size(); ++i) {
     const Token& token = tokens_[i];
-    if (token.is(Tok::Pipe) || token.isName("is")) {
+    if (token.is(Tok::Pipe) || isName(token, "is")) {
       if (!knownFilterOrTestAt(i)) return std::nullopt;
       continue;
     }
     if (!token.is(Tok::BlockBegin) || !tokens_[i + 1].is(Tok::Name)) continue;
-    std::string_view tag = tokens_[i + 1].text;
+    std::string_view tag = textOf(tokens_[i + 1]);
     if (recordedTemplateWide(tag)) return std::nullopt;
     if (tag == "filter" && !knownFilterOrTestAt(i + 1)) return std::nullopt;
     if (tag == "macro") ++depth;
@@ -54,13 +54,14 @@ std::optional<size_t> Parser::deferrableBodyEnd(size_t first) const {
 // At `|` or `{% filter` (the filter name follows) or `is` (`not` may come first): whether
 // the name is a plain name the registry knows.
 bool Parser::knownFilterOrTestAt(size_t index) const {
-  bool test = tokens_[index].isName("is");
+  bool test = isName(tokens_[index], "is");
   size_t name_index = index + 1;
-  if (test && tokens_[name_index].isName("not")) ++name_index;
+  if (test && isName(tokens_[name_index], "not")) ++name_index;
   if (name_index + 1 >= tokens_.size()) return false;
   const Token& token = tokens_[name_index];
   if (!token.is(Tok::Name) || tokens_[name_index + 1].is(Tok::Dot)) return false;
-  return test ? registry_.test(token.text) != nullptr : registry_.filter(token.text) != nullptr;
+  return test ? registry_.test(textOf(token)) != nullptr
+              : registry_.filter(textOf(token)) != nullptr;
 }
 
 // The signature and body, in the same state as parseMacro's eager parse: inside the `macro`

@@ -43,7 +43,7 @@ bool Parser::skipIf(Tok kind) {
 }
 
 bool Parser::skipName(std::string_view text) {
-  if (!current().isName(text)) return false;
+  if (!isName(current(), text)) return false;
   next();
   return true;
 }
@@ -57,7 +57,7 @@ const Token& Parser::expect(Tok kind) {
 }
 
 const Token& Parser::expectName(std::string_view text) {
-  if (!current().isName(text)) {
+  if (!isName(current(), text)) {
     failAt(current().pos, "expected `" + std::string(text) + "`, got " + shown(current()));
   }
   return next();
@@ -70,34 +70,39 @@ void Parser::failAt(uint32_t pos, std::string message) const {
 std::string Parser::shown(const Token& token) const {
   if (token.is(Tok::Eof)) return "end of template";
   if (token.is(Tok::Data)) return "template data";
-  return "`" + std::string(token.text) + "`";
+  return "`" + std::string(textOf(token)) + "`";
 }
 
 // body := ( DATA | "{{" tuple "}}" | "{%" statement "%}" )*   -- up to one of `end_tokens`
 Body Parser::subparse(std::initializer_list<std::string_view> end_tokens) {
   bool tracked = end_tokens.size() > 0;
   if (tracked) end_token_stack_.emplace_back(end_tokens.begin(), end_tokens.size());
-  Body body;
+  // The statements go to the shared scratch list (nested bodies after them) and the body is
+  // made from them once, at its size, instead of growing a vector of its own.
+  const size_t first = body_scratch_.size();
   while (!current().is(Tok::Eof)) {
     const Token& token = current();
     if (token.is(Tok::Data)) {
-      body.push_back(arena_.make<TextStmt>(token.pos, token.text));
+      body_scratch_.push_back(arena_.make<TextStmt>(token.pos, textOf(token)));
       next();
     } else if (token.is(Tok::VariableBegin)) {
       next();
       Expr* expr = parseTuple({});
-      body.push_back(arena_.make<PrintStmt>(token.pos, expr));
+      body_scratch_.push_back(arena_.make<PrintStmt>(token.pos, expr));
       expect(Tok::VariableEnd);
     } else {
       next();
       bool at_end = std::any_of(end_tokens.begin(), end_tokens.end(),
-                                [&](std::string_view name) { return current().isName(name); });
+                                [&](std::string_view name) { return isName(current(), name); });
       if (at_end) break;
-      body.push_back(parseStatement());
+      Stmt* statement = parseStatement();
+      body_scratch_.push_back(statement);
       expect(Tok::BlockEnd);
     }
   }
   if (tracked) end_token_stack_.pop_back();
+  Body body(body_scratch_.begin() + static_cast<std::ptrdiff_t>(first), body_scratch_.end());
+  body_scratch_.resize(first);
   return body;
 }
 
@@ -120,9 +125,9 @@ Stmt* Parser::parseStatement() {
   const Token& token = current();
   if (!token.is(Tok::Name)) failAt(token.pos, "expected a tag name, got " + shown(token));
   NestingGuard guard(*this, token.pos);
-  tag_stack_.push_back({token.text, token.pos});
+  tag_stack_.push_back({textOf(token), token.pos});
   Stmt* stmt = nullptr;
-  std::string_view tag = token.text;
+  std::string_view tag = textOf(token);
   if (tag == "for")
     stmt = parseFor();
   else if (tag == "if")
@@ -163,18 +168,19 @@ void Parser::failUnknownTag(const Token& token) {
   std::vector<std::string_view> expected;
   for (const auto& ends : end_token_stack_)
     expected.insert(expected.end(), ends.begin(), ends.end());
-  bool nesting_mistake = std::find(expected.begin(), expected.end(), token.text) != expected.end();
+  bool nesting_mistake =
+      std::find(expected.begin(), expected.end(), textOf(token)) != expected.end();
   if (nesting_mistake && !end_token_stack_.empty()) {
-    failAt(token.pos, "unexpected `" + std::string(token.text) + "`; expected " +
+    failAt(token.pos, "unexpected `" + std::string(textOf(token)) + "`; expected " +
                           joinQuoted(end_token_stack_.back()) + " first");
   }
-  std::string message = "unknown tag `" + std::string(token.text) + "`";
+  std::string message = "unknown tag `" + std::string(textOf(token)) + "`";
   std::vector<std::string_view> candidates = kKnownTags;
   if (!end_token_stack_.empty()) {
     candidates.insert(candidates.end(), end_token_stack_.back().begin(),
                       end_token_stack_.back().end());
   }
-  std::string suggestion = didYouMean(token.text, candidates);
+  std::string suggestion = didYouMean(textOf(token), candidates);
   if (suggestion.empty() && !end_token_stack_.empty()) {
     suggestion = "; expected " + joinQuoted(end_token_stack_.back());
   }
@@ -201,9 +207,9 @@ Stmt* Parser::parseFor() {
   expectName("in");
   node->iter = parseTuple({.with_cond_expr = false, .extra_end = {"recursive"}});
   if (skipName("if")) node->filter = parseExpression();
-  if (current().isName("recursive")) failAt(current().pos, "recursive loops are not supported");
+  if (isName(current(), "recursive")) failAt(current().pos, "recursive loops are not supported");
   node->body = parseStatements({"endfor", "else"}, EndTag::Keep);
-  if (next().text != "endfor") node->orelse = parseStatements({"endfor"}, EndTag::Consume);
+  if (textOf(next()) != "endfor") node->orelse = parseStatements({"endfor"}, EndTag::Consume);
   return node;
 }
 
@@ -216,8 +222,8 @@ Stmt* Parser::parseIf() {
     Body body = parseStatements({"elif", "else", "endif"}, EndTag::Keep);
     node->branches.emplace_back(test, std::move(body));
     const Token& token = next();
-    if (token.text == "elif") continue;
-    if (token.text == "else") node->orelse = parseStatements({"endif"}, EndTag::Consume);
+    if (textOf(token) == "elif") continue;
+    if (textOf(token) == "else") node->orelse = parseStatements({"endif"}, EndTag::Consume);
     return node;
   }
 }
@@ -226,7 +232,7 @@ Stmt* Parser::parseIf() {
 Stmt* Parser::parseBlock() {
   auto* node = arena_.make<BlockStmt>(next().pos);
   const Token& name_token = expect(Tok::Name);
-  node->name = name(name_token.text);
+  node->name = name(textOf(name_token));
   for (const BlockStmt* other : result_.blocks) {
     if (other->name == node->name) {
       failAt(name_token.pos, "block `" + *node->name + "` defined twice");
@@ -284,8 +290,8 @@ Stmt* Parser::parseExtends() {
 
 // context_flag := ("with" | "without") "context"
 bool Parser::parseContextFlag(bool& with_context) {
-  if ((current().isName("with") || current().isName("without")) && peek().isName("context")) {
-    with_context = next().text == "with";
+  if ((isName(current(), "with") || isName(current(), "without")) && isName(peek(), "context")) {
+    with_context = textOf(next()) == "with";
     next();
     return true;
   }
@@ -296,7 +302,7 @@ bool Parser::parseContextFlag(bool& with_context) {
 Stmt* Parser::parseInclude() {
   auto* node = arena_.make<IncludeStmt>(next().pos);
   node->template_name = parseTemplateName();
-  if (current().isName("ignore") && peek().isName("missing")) {
+  if (isName(current(), "ignore") && isName(peek(), "missing")) {
     next();
     next();
     node->ignore_missing = true;
@@ -328,16 +334,16 @@ Stmt* Parser::parseFrom() {
     }
     if (parseContextFlag(node->with_context)) break;
     const Token& token = next();
-    if (token.text.front() == '_') {
+    if (textOf(token).front() == '_') {
       failAt(token.pos, "names starting with an underscore cannot be imported");
     }
     NameExpr* alias;
     if (skipName("as")) {
       alias = parseTargetName();
     } else {
-      alias = arena_.make<NameExpr>(token.pos, name(token.text), NameCtx::Store);
+      alias = arena_.make<NameExpr>(token.pos, name(textOf(token)), NameCtx::Store);
     }
-    node->names.push_back({name(token.text), alias});
+    node->names.push_back({name(textOf(token)), alias});
     if (parseContextFlag(node->with_context) || !current().is(Tok::Comma)) break;
   }
   return node;

@@ -104,6 +104,10 @@ class Parser {
   [[noreturn]] void failUnexpected(const Token& token, std::string_view expected) const;
   std::string shown(const Token& token) const;
   const std::string* name(std::string_view text) const { return intern(text); }
+  std::string_view textOf(const Token& token) const { return token.textIn(source_); }
+  bool isName(const Token& token, std::string_view name) const {
+    return token.is(Tok::Name) && textOf(token) == name;
+  }
 
   // Statements (parser.cpp).
   Body subparse(std::initializer_list<std::string_view> end_tokens);
@@ -156,6 +160,7 @@ class Parser {
   Expr* parseStringLiteral();
   Expr* parseNumber(const Token& token);
   bool isTupleEnd(std::initializer_list<std::string_view> extra_end) const;
+  bool atLoneOperand() const;
   void enterNesting();
 
   struct OpenTag {
@@ -175,6 +180,7 @@ class Parser {
   // initializer lists, which outlive the parse of their body (no copy per body).
   std::vector<std::span<const std::string_view>> end_token_stack_;
   std::vector<const std::string*> block_stack_;
+  std::vector<Stmt*> body_scratch_;  // the statements of the bodies being parsed, innermost last
   ParsedTemplate result_;
 
   friend class NestingGuard;

@@ -39,7 +39,33 @@ NestingGuard::NestingGuard(Parser& parser, uint32_t pos) : parser_(parser) {
 // expression := cond_expr | or_expr   (see with_cond_expr)
 Expr* Parser::parseExpression(bool with_cond_expr) {
   NestingGuard guard(*this, current().pos);
+  if (atLoneOperand()) {
+    // What the descent through every level would give, nested as deep (parseUnary's guard).
+    NestingGuard unary_guard(*this, current().pos);
+    return parsePrimary();
+  }
   return with_cond_expr ? parseCondExpr() : parseOr();
+}
+
+// A name other than `not`, a string or a number, followed by a token that ends an
+// expression: no operator, postfix, filter or test can apply to it.
+bool Parser::atLoneOperand() const {
+  const Token& token = current();
+  bool operand = token.is(Tok::String) || token.is(Tok::Integer) || token.is(Tok::Float) ||
+                 (token.is(Tok::Name) && textOf(token) != "not");
+  if (!operand) return false;
+  switch (peek().kind) {
+    case Tok::VariableEnd:
+    case Tok::BlockEnd:
+    case Tok::Comma:
+    case Tok::RParen:
+    case Tok::RBracket:
+    case Tok::RBrace:
+    case Tok::Colon:
+      return true;
+    default:
+      return false;
+  }
 }
 
 // cond_expr := or_expr ("if" or_expr ["else" cond_expr])*
@@ -58,7 +84,7 @@ Expr* Parser::parseCondExpr() {
 // `operand (word operand)*` as left-nested `and`/`or` nodes.
 Expr* Parser::parseLogic(ExprKind kind, std::string_view word, Expr* (Parser::*operand)()) {
   Expr* left = (this->*operand)();
-  while (current().isName(word)) {
+  while (isName(current(), word)) {
     uint32_t pos = next().pos;
     left = arena_.make<BinaryExpr>(kind, pos, BinOp::Add, left, (this->*operand)());
   }
@@ -73,7 +99,7 @@ Expr* Parser::parseAnd() { return parseLogic(ExprKind::And, "and", &Parser::pars
 
 // not_expr := "not" not_expr | compare
 Expr* Parser::parseNot() {
-  if (current().isName("not")) {
+  if (isName(current(), "not")) {
     NestingGuard guard(*this, current().pos);
     uint32_t pos = next().pos;
     return arena_.make<UnaryExpr>(ExprKind::Not, pos, parseNot());
@@ -92,7 +118,7 @@ Expr* Parser::parseCompare() {
       next();
     } else if (skipName("in")) {
       op = CmpOp::In;
-    } else if (current().isName("not") && peek().isName("in")) {
+    } else if (isName(current(), "not") && isName(peek(), "in")) {
       next();
       next();
       op = CmpOp::NotIn;
@@ -185,16 +211,16 @@ Expr* Parser::parsePrimary() {
   switch (token.kind) {
     case Tok::Name: {
       next();
-      if (token.text == "true" || token.text == "True") {
+      if (textOf(token) == "true" || textOf(token) == "True") {
         return arena_.make<ConstExpr>(token.pos, Value::boolean(true));
       }
-      if (token.text == "false" || token.text == "False") {
+      if (textOf(token) == "false" || textOf(token) == "False") {
         return arena_.make<ConstExpr>(token.pos, Value::boolean(false));
       }
-      if (token.text == "none" || token.text == "None") {
+      if (textOf(token) == "none" || textOf(token) == "None") {
         return arena_.make<ConstExpr>(token.pos, Value::none());
       }
-      return arena_.make<NameExpr>(token.pos, name(token.text), NameCtx::Load);
+      return arena_.make<NameExpr>(token.pos, name(textOf(token)), NameCtx::Load);
     }
     case Tok::String:
       return parseStringLiteral();
@@ -223,7 +249,7 @@ Expr* Parser::parseStringLiteral() {
   std::string text;
   while (current().is(Tok::String)) {
     const Token& token = next();
-    text += unescapeString(token.text.substr(1, token.text.size() - 2), token.pos);
+    text += unescapeString(textOf(token).substr(1, textOf(token).size() - 2), token.pos);
   }
   return arena_.make<ConstExpr>(pos, Value::string(std::move(text)));
 }
@@ -231,7 +257,7 @@ Expr* Parser::parseStringLiteral() {
 // number := INTEGER | FLOAT   -- `_` separators, 0x/0o/0b prefixes
 Expr* Parser::parseNumber(const Token& token) {
   std::string digits;
-  for (char c : token.text) {
+  for (char c : textOf(token)) {
     if (c != '_') digits.push_back(c);
   }
   if (token.is(Tok::Float)) {
@@ -262,7 +288,7 @@ bool Parser::isTupleEnd(std::initializer_list<std::string_view> extra_end) const
   const Token& t = current();
   if (t.is(Tok::VariableEnd) || t.is(Tok::BlockEnd) || t.is(Tok::RParen)) return true;
   for (std::string_view name : extra_end) {
-    if (t.isName(name)) return true;
+    if (isName(t, name)) return true;
   }
   return false;
 }
@@ -271,19 +297,21 @@ bool Parser::isTupleEnd(std::initializer_list<std::string_view> extra_end) const
 // item := expression | or_expr (tuple_no_cond) | primary (target_tuple, simplified)
 Expr* Parser::parseTuple(const TupleOptions& options) {
   uint32_t pos = current().pos;
+  auto item = [&] {
+    return options.simplified ? parsePrimary() : parseExpression(options.with_cond_expr);
+  };
   std::vector<Expr*> items;
-  bool is_tuple = false;
-  while (true) {
-    if (!items.empty()) expect(Tok::Comma);
-    if (isTupleEnd(options.extra_end)) break;
-    items.push_back(options.simplified ? parsePrimary() : parseExpression(options.with_cond_expr));
-    if (!current().is(Tok::Comma)) break;
-    is_tuple = true;
-  }
-  if (!is_tuple) {
-    if (!items.empty()) return items[0];
-    if (!options.explicit_parens)
-      failAt(current().pos, "expected an expression, got " + shown(current()));
+  if (!isTupleEnd(options.extra_end)) {
+    Expr* first = item();
+    if (!current().is(Tok::Comma)) return first;  // one expression: no list of items made
+    items.push_back(first);
+    while (current().is(Tok::Comma)) {
+      next();
+      if (isTupleEnd(options.extra_end)) break;
+      items.push_back(item());
+    }
+  } else if (!options.explicit_parens) {
+    failAt(current().pos, "expected an expression, got " + shown(current()));
   }
   auto* tuple = arena_.make<SeqExpr>(ExprKind::Tuple, pos);
   tuple->items = std::move(items);
@@ -343,7 +371,7 @@ Expr* Parser::parseFilterExpr(Expr* node) {
   while (true) {
     if (current().is(Tok::Pipe)) {
       node = parseFilterChain(node, FilterStart::AtPipe);
-    } else if (current().isName("is")) {
+    } else if (isName(current(), "is")) {
       node = parseTest(node);
     } else if (current().is(Tok::LParen)) {
       node = parseCall(node);
@@ -359,7 +387,7 @@ Expr* Parser::parseSubscript(Expr* node) {
   const Token& token = next();
   if (token.is(Tok::Dot)) {
     const Token& attr = next();
-    if (attr.is(Tok::Name)) return arena_.make<GetattrExpr>(attr.pos, node, name(attr.text));
+    if (attr.is(Tok::Name)) return arena_.make<GetattrExpr>(attr.pos, node, name(textOf(attr)));
     if (!attr.is(Tok::Integer)) failAt(attr.pos, "expected name or number after `.`");
     return arena_.make<GetitemExpr>(attr.pos, node, parseNumber(attr));
   }
@@ -420,7 +448,7 @@ ArgList Parser::parseCallArgs() {
       list.dyn_kwargs = parseExpression();
     } else if (current().is(Tok::Name) && peek().is(Tok::Assign)) {
       ensure(!list.dyn_kwargs);
-      const std::string* key = name(next().text);
+      const std::string* key = name(textOf(next()));
       next();
       list.kwargs.emplace_back(key, parseExpression());
     } else {
@@ -442,8 +470,8 @@ FilterExpr* Parser::parseFilterChain(Expr* input, FilterStart start) {
     if (!at_name) next();
     at_name = false;
     const Token& token = expect(Tok::Name);
-    std::string filter_name(token.text);
-    while (skipIf(Tok::Dot)) filter_name += "." + std::string(expect(Tok::Name).text);
+    std::string filter_name(textOf(token));
+    while (skipIf(Tok::Dot)) filter_name += "." + std::string(textOf(expect(Tok::Name)));
     node = arena_.make<FilterExpr>(token.pos, input, name(filter_name));
     node->def = registry_.filter(filter_name);
     if (!node->def) {
@@ -462,8 +490,8 @@ Expr* Parser::parseTest(Expr* node) {
   uint32_t pos = next().pos;
   bool negated = skipName("not");
   const Token& token = expect(Tok::Name);
-  std::string test_name(token.text);
-  while (skipIf(Tok::Dot)) test_name += "." + std::string(expect(Tok::Name).text);
+  std::string test_name(textOf(token));
+  while (skipIf(Tok::Dot)) test_name += "." + std::string(textOf(expect(Tok::Name)));
   auto* test = arena_.make<TestExpr>(token.pos, node, name(test_name));
   test->def = registry_.test(test_name);
   if (!test->def) {
@@ -475,8 +503,8 @@ Expr* Parser::parseTest(Expr* node) {
                    t.is(Tok::LParen) || t.is(Tok::LBracket) || t.is(Tok::LBrace);
   if (t.is(Tok::LParen)) {
     test->args = parseCallArgs();
-  } else if (arg_start && !t.isName("else") && !t.isName("or") && !t.isName("and")) {
-    if (t.isName("is")) failAt(t.pos, "you cannot chain multiple tests with `is`");
+  } else if (arg_start && !isName(t, "else") && !isName(t, "or") && !isName(t, "and")) {
+    if (isName(t, "is")) failAt(t.pos, "you cannot chain multiple tests with `is`");
     test->args.args.push_back(parsePostfix(parsePrimary()));
   }
   if (!negated) return test;
@@ -497,12 +525,12 @@ Expr* Parser::parseAssignTarget(const AssignTargetOptions& options) {
     const Token& ns = expect(Tok::Name);
     next();
     const Token& attr = expect(Tok::Name);
-    auto* ref = arena_.make<NameExpr>(ns.pos, name(ns.text), NameCtx::Load);
-    return arena_.make<NamespaceRefExpr>(attr.pos, ref, name(attr.text));
+    auto* ref = arena_.make<NameExpr>(ns.pos, name(textOf(ns)), NameCtx::Load);
+    return arena_.make<NamespaceRefExpr>(attr.pos, ref, name(textOf(attr)));
   }
   if (options.name_only) {
     const Token& token = expect(Tok::Name);
-    return arena_.make<NameExpr>(token.pos, name(token.text), NameCtx::Store);
+    return arena_.make<NameExpr>(token.pos, name(textOf(token)), NameCtx::Store);
   }
   target = options.with_tuple ? parseTuple({.simplified = true, .extra_end = options.extra_end})
                               : parsePrimary();

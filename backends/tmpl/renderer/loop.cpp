@@ -3,6 +3,7 @@
 // Jinja2's LoopContext attributes (index, first, last, length, cycle, changed, ...).
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/renderer/render.h"
+#include "backends/tmpl/values/string_ops.h"
 #include "backends/tmpl/values/value_ops.h"
 #include "backends/tmpl/values/value_print.h"
 #include "ir/support/unicode.h"
@@ -94,6 +95,14 @@ class Feed {
     return true;
   }
 
+  /// Whether an item follows (`loop.last`), fetching it ahead without copying it out.
+  bool hasMore() {
+    if (head_ < buffer_.size() || has_peeked_) return true;
+    has_peeked_ = fetch(peeked_);
+    if (!has_peeked_) peeked_ = Value();
+    return has_peeked_;
+  }
+
   size_t remaining() {
     if (has_peeked_) {  // the buffer is consumed: the held item comes first
       buffer_.push_back(std::move(peeked_));
@@ -171,6 +180,7 @@ class LoopObject final : public Object {
   }
   bool hasNext(Value* out) const {
     if (!feed_) return false;
+    if (!out) return feed_->hasMore();
     Value v;
     if (!feed_->peek(v)) return false;
     if (out) *out = v;
@@ -232,10 +242,50 @@ bool LoopObject::getAttr(std::string_view name, Value& out) const {
   return true;
 }
 
-}  // namespace
+void execElse(Exec& ex, Site& site, const ForStmt& node) {
+  FrameHolder else_frame(ex, site.frame, &site.frame->context(), node.else_frame);
+  initFrame(*else_frame, node.else_frame, ex.registry);
+  Site else_site = site.inner(else_frame.get());
+  execBody(ex, else_site, node.orelse);
+}
 
-void execFor(Exec& ex, Site& site, const ForStmt& node) {
-  Value iterable = eval(ex, site, node.iter);
+bool hasNoArgs(const ArgList& args) {
+  return args.args.empty() && args.kwargs.empty() && !args.dyn_args && !args.dyn_kwargs;
+}
+
+// `for k, v in name.items() | sort` (the built-in sort, no arguments, no loop filter).
+bool isSortedItemsLoop(const ForStmt& node) {
+  if (node.filter || node.target->kind != ExprKind::Tuple) return false;
+  const auto& names = static_cast<const SeqExpr*>(node.target)->items;
+  if (names.size() != 2 || names[0]->kind != ExprKind::Name || names[1]->kind != ExprKind::Name)
+    return false;
+  if (node.iter->kind != ExprKind::Filter) return false;
+  const auto* sort = static_cast<const FilterExpr*>(node.iter);
+  if (sort->def != builtinTable().filter("sort") || !hasNoArgs(sort->args)) return false;
+  if (!sort->input || sort->input->kind != ExprKind::Call) return false;
+  const auto* call = static_cast<const CallExpr*>(sort->input);
+  if (call->callee->kind != ExprKind::Getattr || !hasNoArgs(call->args)) return false;
+  const auto* items = static_cast<const GetattrExpr*>(call->callee);
+  return *items->attr == "items" && items->object->kind == ExprKind::Name;
+}
+
+// The items of a sorted-items loop over a dict, as `d.items() | sort` makes them: the
+// entries in sorted order (a fault of the sort located at the filter), charged like the
+// sorted list.
+std::vector<DictObject::Entry> sortedEntries(Exec& ex, const ForStmt& node, const Value& dict) {
+  std::vector<size_t> order;
+  try {
+    order = sortedItemsOrder(dict.dict());
+  } catch (const Fault& fault) {
+    throw ex.tmpl->error(node.iter->pos, fault.message());
+  }
+  std::vector<DictObject::Entry> entries;
+  entries.reserve(order.size());
+  for (size_t i : order) entries.push_back(dict.dict().entries()[i]);
+  return entries;
+}
+
+void runLoop(Exec& ex, Site& site, const ForStmt& node, Value iterable) {
   if (!iterable.isObject() && !isIterable(iterable)) {
     fail("`" + std::string(typeName(iterable)) + "` object is not iterable");
   }
@@ -262,11 +312,49 @@ void execFor(Exec& ex, Site& site, const ForStmt& node) {
     }
     execBody(ex, inner, node.body);
   }
-  if (iterated || node.orelse.empty()) return;
-  FrameHolder else_frame(ex, site.frame, &site.frame->context(), node.else_frame);
-  initFrame(*else_frame, node.else_frame, ex.registry);
-  Site else_site = site.inner(else_frame.get());
-  execBody(ex, else_site, node.orelse);
+  if (!iterated && !node.orelse.empty()) execElse(ex, site, node);
+}
+
+// A sorted-items loop over a dict (false for anything else: the loop runs as written). The
+// pairs are bound to the two names without tuples unless the body uses `loop`, whose
+// previtem and nextitem are tuples.
+bool runSortedItems(Exec& ex, Site& site, const ForStmt& node) {
+  if (node.sorted_items < 0) node.sorted_items = isSortedItemsLoop(node) ? 1 : 0;
+  if (node.sorted_items == 0) return false;
+  const auto* call = static_cast<const CallExpr*>(static_cast<const FilterExpr*>(node.iter)->input);
+  const Expr* object = static_cast<const GetattrExpr*>(call->callee)->object;
+  const Value& self = site.frame->slot(static_cast<const NameExpr*>(object)->ref);
+  if (!self.isDict()) return false;
+  std::vector<DictObject::Entry> entries = sortedEntries(ex, node, self);
+  if (node.loop_slot >= 0) {
+    std::vector<Value> tuples;
+    tuples.reserve(entries.size());
+    for (auto& [k, v] : entries) tuples.push_back(Value::newTuple({std::move(k), std::move(v)}));
+    runLoop(ex, site, node, Value::newList(std::move(tuples)));
+    return true;
+  }
+  chargeWork(entries.size() * sizeof(Value));  // the sorted list
+  const auto& names = static_cast<const SeqExpr*>(node.target)->items;
+  SlotRef key = static_cast<const NameExpr*>(names[0])->ref;
+  SlotRef value = static_cast<const NameExpr*>(names[1])->ref;
+  FrameHolder frame(ex, site.frame, &site.frame->context(), node.loop_frame);
+  Site inner = site.inner(frame.get());
+  for (const auto& [k, v] : entries) {
+    ex.step();
+    initFrame(*frame, node.loop_frame, ex.registry);
+    frame->slot(key) = k;
+    frame->slot(value) = v;
+    execBody(ex, inner, node.body);
+  }
+  if (entries.empty() && !node.orelse.empty()) execElse(ex, site, node);
+  return true;
+}
+
+}  // namespace
+
+void execFor(Exec& ex, Site& site, const ForStmt& node) {
+  if (runSortedItems(ex, site, node)) return;
+  runLoop(ex, site, node, eval(ex, site, node.iter));
 }
 
 }  // namespace smachac::tmpl

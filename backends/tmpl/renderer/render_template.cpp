@@ -149,37 +149,35 @@ class MacroBinder {
     if (args.keyword.size() > 64) fail("too many keyword arguments");
   }
 
+  // Keywords are matched (and unknown ones reported) before anything is bound; then the
+  // parameters are bound in order, each default evaluated with the ones before it bound.
   void bind(Exec& ex, Frame& frame) {
     size_t n = node_.params.size();
     size_t given = std::min(n, args_.positional.size());
-    static const std::string* const kNotGiven = intern("");
-    SmallVector<Value, 8> values;
-    for (size_t i = 0; i < n; ++i) {
-      values.pushBack(i < given ? args_.positional[i] : Value::missing(kNotGiven));
-    }
-    if (given < n) {
-      for (size_t i = given; i < n; ++i) {
-        if (const Value* v = takeKeyword(*node_.params[i]->name)) values[i] = *v;
-      }
-    }
+    SmallVector<const Value*, 8> by_keyword;
+    for (size_t i = given; i < n; ++i) by_keyword.pushBack(takeKeyword(*node_.params[i]->name));
     bindSpecials(frame);
     Site site{&frame, nullptr, nullptr, false, false};
     size_t first_default = n - node_.defaults.size();
     for (size_t i = 0; i < n; ++i) {
-      Value v = values[i];
-      if (v.isMissing()) {
-        v = i >= first_default ? eval(ex, site, node_.defaults[i - first_default])
-                               : Value::undefinedHint("parameter `" + *node_.params[i]->name +
-                                                      "` was not provided");
+      Value& slot = frame.slot(node_.params[i]->ref);
+      const Value* v = i < given ? &args_.positional[i] : by_keyword[i - given];
+      if (v && !v->isMissing()) {
+        slot = *v;
+      } else if (i >= first_default) {
+        slot = eval(ex, site, node_.defaults[i - first_default]);
+      } else {
+        slot = Value::undefinedHint("parameter `" + *node_.params[i]->name + "` was not provided");
       }
-      frame.slot(node_.params[i]->ref) = v;
     }
   }
 
  private:
+  // Keyword names are interned when the call is made: most match by address.
   const Value* takeKeyword(const std::string& name) {
     for (size_t i = 0; i < args_.keyword.size(); ++i) {
-      if ((taken_ >> i & 1) == 0 && *args_.keyword[i].first == name) {
+      const std::string* keyword = args_.keyword[i].first;
+      if ((taken_ >> i & 1) == 0 && (keyword == &name || *keyword == name)) {
         taken_ |= uint64_t{1} << i;
         return &args_.keyword[i].second;
       }

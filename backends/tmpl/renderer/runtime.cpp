@@ -33,6 +33,11 @@ const Value* Context::find(const std::string* name, size_t hash) const {
         if (n == name) return &v;
       }
     }
+    if (c->shared_ && (c->shared_->names & bit)) {
+      for (const auto& [n, v] : c->shared_->vars) {
+        if (n == name) return &v;
+      }
+    }
     if (c->parent_.isDict()) {
       if (const Value* v = c->parent_.dict().findString(*name, hash)) return v;
     }
@@ -48,6 +53,7 @@ Value Context::resolve(const std::string* name, size_t hash, const Registry& reg
 
 void Context::clear() {
   names_ = 0;
+  shared_ = nullptr;
   parent_ = Value();
   outer_ = nullptr;
   locals_.clear();

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -20,6 +21,7 @@
 namespace smachac::tmpl {
 
 class EnvironmentImpl;
+struct RenderPrologue;
 
 /// Which blocks a render removes, as SMACHA's SkipBlockExtension does.
 struct SkipPolicy {
@@ -37,6 +39,11 @@ struct SkipPolicy {
   static size_t recentSlot(const Template& templ) {
     return (reinterpret_cast<uintptr_t>(&templ) >> 6) % kRecentSlots;
   }
+  /// renderBlock's policies (kept by the environment) keep their template's render prologue
+  /// (prologue.h), recorded on the first render; null if the template's roots have none.
+  bool keeps_prologue = false;
+  mutable bool prologue_recorded = false;
+  mutable std::shared_ptr<const RenderPrologue> prologue;
 
   bool skips(const std::string* name) const;
   bool skipsBlock(const BlockStmt& block) const {
@@ -51,6 +58,13 @@ struct BlockEntry {
   const std::string* name;
   const Template* tmpl;
   const BlockStmt* block;
+};
+
+/// Template-level variables that every render of a template binds alike (the names its roots
+/// import, see prologue.h): the contexts of those renders share one table instead of copies.
+struct SharedVars {
+  std::vector<std::pair<const std::string*, Value>> vars;
+  uint64_t names = 0;  // Context::nameBit of each name
 };
 
 /// Jinja's Context: what every frame of one template render resolves unknown names from.
@@ -78,7 +92,21 @@ class Context final : public Object {
     names_ |= bit;
     vars_.emplace_back(name, value);
   }
+  /// Binds the shared variables `shared` (which must outlive the context's use) in a context
+  /// that has no variables yet; false (nothing bound) otherwise. Later bindings of the same
+  /// names go to the context's own variables, which are looked up first.
+  bool shareVars(const SharedVars& shared) {
+    if (shared_ || !vars_.empty()) return false;
+    shared_ = &shared;
+    return true;
+  }
   void exportName(const std::string* name);
+  /// One bit per interned name (by address): `names_` has the bits of every name in `vars_`
+  /// and `locals_`, so most lookups of a name that is not there skip both scans.
+  static uint64_t nameBit(const std::string* name) {
+    auto address = reinterpret_cast<uintptr_t>(name);
+    return uint64_t{1} << ((address >> 4 ^ address >> 10) & 63);
+  }
   void unexportName(const std::string* name) {
     if (!exported_.empty()) unexportListed(name);  // imports at the top of a root: nothing yet
   }
@@ -86,6 +114,7 @@ class Context final : public Object {
   /// Drops everything the context holds (breaks reference cycles through macros); keeps the
   /// capacity of its tables for reuse.
   void clear();
+  /// The variables the context binds itself (not the shared ones: they are never exported).
   const std::vector<std::pair<const std::string*, Value>>& vars() const { return vars_; }
   const std::vector<const std::string*>& exported() const { return exported_; }
   std::vector<BlockEntry>& blocks() { return blocks_; }
@@ -94,14 +123,9 @@ class Context final : public Object {
   const Value* find(const std::string* name, size_t hash) const;
   void replaceVar(const std::string* name, const Value& value);
   void unexportListed(const std::string* name);
-  /// One bit per interned name (by address): `names_` has the bits of every name in `vars_`
-  /// and `locals_`, so most lookups of a name that is not there skip both scans.
-  static uint64_t nameBit(const std::string* name) {
-    auto address = reinterpret_cast<uintptr_t>(name);
-    return uint64_t{1} << ((address >> 4 ^ address >> 10) & 63);
-  }
 
   uint64_t names_ = 0;
+  const SharedVars* shared_ = nullptr;
   Value parent_;
   Ref<Context> outer_;
   std::vector<std::pair<const std::string*, Value>> locals_;

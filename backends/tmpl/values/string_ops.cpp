@@ -431,6 +431,33 @@ std::vector<Value> sortValues(std::vector<Value> items, bool reverse,
   return out;
 }
 
+// Tuple comparison (sequenceLess) of the pairs (ka, va) and (kb, vb). Two different str keys
+// (the common case) decide it by their bytes, which order as their code points.
+bool pairLess(const DictObject::Entry& a, const DictObject::Entry& b) {
+  if (a.first.isString() && b.first.isString()) {
+    int order = a.first.s().compare(b.first.s());
+    if (order != 0) return order < 0;
+  }
+  DepthGuard guard;
+  if (!(a.first.identity() && a.first.identity() == b.first.identity()) &&
+      !equals(a.first, b.first)) {
+    return lessThan(a.first, b.first);
+  }
+  if (!(a.second.identity() && a.second.identity() == b.second.identity()) &&
+      !equals(a.second, b.second)) {
+    return lessThan(a.second, b.second);
+  }
+  return false;
+}
+
+std::vector<size_t> sortedItemsOrder(const DictObject& dict) {
+  const std::vector<DictObject::Entry>& entries = dict.entries();
+  std::vector<size_t> order(entries.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  mergeSort(order, [&](size_t a, size_t b) { return pairLess(entries[a], entries[b]); });
+  return order;
+}
+
 namespace {
 
 class DictViewObject final : public Object {

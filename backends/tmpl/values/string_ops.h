@@ -60,6 +60,9 @@ const std::string& stringArg(const Value& v, std::string_view what);
 /// A stable sort of `items` by Python ordering (`reverse` keeps equal items in order).
 std::vector<Value> sortValues(std::vector<Value> items, bool reverse,
                               const std::vector<Value>* keys = nullptr);
+/// The order in which `d.items() | sort` puts the entries of `dict`: the order of the sorted
+/// (key, value) tuples, with the same comparisons (and the same faults), without the tuples.
+std::vector<size_t> sortedItemsOrder(const DictObject& dict);
 
 enum class DictView { Items, Keys, Values };
 Value makeDictView(const Value& dict, DictView kind);

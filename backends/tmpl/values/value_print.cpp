@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 #include "backends/tmpl/values/value_ops.h"
@@ -95,6 +96,42 @@ void appendStr(std::string& out, const Value& v) {
   }
 }
 
+namespace {
+
+// Whether repr() writes `text` between single quotes as it is: printable ASCII without a
+// quote or backslash (the names and keys SMACHA's `pyrepr` prints), checked 8 bytes a step.
+bool isPlainReprText(std::string_view text) {
+  constexpr uint64_t kOnes = 0x0101010101010101ull;
+  constexpr uint64_t kHigh = 0x8080808080808080ull;
+  auto has_byte = [](uint64_t word, unsigned char byte) {
+    uint64_t x = word ^ (kOnes * byte);
+    return ((x - kOnes) & ~x & kHigh) != 0;
+  };
+  size_t i = 0;
+  for (; i + 8 <= text.size(); i += 8) {
+    uint64_t word;
+    std::memcpy(&word, text.data() + i, sizeof word);
+    uint64_t below_space = (word - kOnes * 0x20) & ~word & kHigh;
+    uint64_t from_delete = ((word + kOnes) | word) & kHigh;  // 0x7F and above
+    if (below_space || from_delete || has_byte(word, '\\') || has_byte(word, '\'')) return false;
+  }
+  for (; i < text.size(); ++i) {
+    auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 || c >= 0x7F || c == '\\' || c == '\'') return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void appendStringRepr(std::string& out, std::string_view text) {
+  if (!isPlainReprText(text)) return appendPythonStringRepr(out, text);
+  out.reserve(out.size() + text.size() + 2);
+  out += '\'';
+  out.append(text);
+  out += '\'';
+}
+
 void appendRepr(std::string& out, const Value& v) {
   switch (v.kind()) {
     case Kind::Undefined:
@@ -119,7 +156,7 @@ void appendRepr(std::string& out, const Value& v) {
         out += ")";
         return;
       }
-      appendPythonStringRepr(out, v.s());
+      appendStringRepr(out, v.s());
       return;
     case Kind::List:
     case Kind::Tuple:

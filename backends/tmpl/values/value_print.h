@@ -11,6 +11,8 @@ namespace smachac::tmpl {
 
 void appendStr(std::string& out, const Value& v);
 void appendRepr(std::string& out, const Value& v);
+/// Python's repr() of a str (appendPythonStringRepr, with a fast path for plain ASCII).
+void appendStringRepr(std::string& out, std::string_view text);
 std::string str(const Value& v);
 std::string repr(const Value& v);
 

@@ -7,10 +7,13 @@ them first and in this order, so that a compile faults in fewer pages of code.
 
 Runs BUILD_DIR's smachac under callgrind (symbols not demangled) on `--version` and on every
 script of bench/compare's corpus (SMACHA's public test scripts; SMACHA_ROOT defaults to the
-one bench/compare finds, anchors.smacha_root()), adds up each function's own instructions
-over the runs, and lists the functions most used first. A name that the binary defines more than once (a
-local clone like `...constprop.0` in many files) is left out: lld would move every
-definition of it, and with each the whole section around it. The list goes stale as the code
+one bench/compare finds, anchors.smacha_root()), and lists the functions that ran: first
+those that ran in the most of these processes, among equals the most used (own instructions
+over all runs) first. What a page fault maps is a window of code, so the functions nearly
+every compile runs are packed together, however few instructions some of them take, and
+those of rarer scripts follow. The binary is compiled with a section per function
+(top-level CMakeLists.txt), so a name it defines more than once (a local clone like
+`...constprop.0` in many files) moves only those functions. The list goes stale as the code
 changes; a name it lacks is only placed where the linker would put it anyway.
 """
 import collections
@@ -35,8 +38,10 @@ def command_lines(smachac, root, out):
         yield argv[:3] + ["-Wno-error=" + k for k in kinds] + argv[3:]
 
 
-def own_costs(profile, total):
-    """Adds each function's own instructions in a callgrind profile to `total`."""
+def own_costs(profile, total, runs):
+    """Adds each function's own instructions in a callgrind profile to `total`, and one to
+    `runs` for each function that ran in it."""
+    ran = set()
     names, current, after_call = {}, None, False
     for line in open(profile, errors="replace"):
         if line.startswith(("fn=", "cfn=")):
@@ -51,32 +56,25 @@ def own_costs(profile, total):
             fields = line.split()
             if not after_call and current and len(fields) >= 2 and fields[1].isdigit():
                 total[current.split("'")[0]] += int(fields[1])
+                ran.add(current.split("'")[0])
             after_call = False
-
-
-def defined_more_than_once(binary):
-    listing = subprocess.run(["nm", "--defined-only", binary], capture_output=True,
-                             text=True, check=True).stdout
-    counts = collections.Counter(f[2] for f in map(str.split, listing.splitlines())
-                                 if len(f) == 3 and f[1] in "tTwW")
-    return {name for name, n in counts.items() if n > 1}
+    runs.update(ran)
 
 
 def main():
     build = pathlib.Path(sys.argv[1]).resolve()
     root = sys.argv[2] if len(sys.argv) > 2 else str(anchors.smacha_root())
     smachac = str(build / "tools/smachac/smachac")
-    total = collections.Counter()
+    total, runs = collections.Counter(), collections.Counter()
     with tempfile.TemporaryDirectory() as tmp:
         for i, argv in enumerate(command_lines(smachac, root, tmp + "/out.py")):
             profile = "%s/%d.cg" % (tmp, i)
             subprocess.run(["valgrind", "--tool=callgrind", "--demangle=no",
                             "--callgrind-out-file=" + profile] + argv,
                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-            own_costs(profile, total)
-    ambiguous = defined_more_than_once(smachac)
-    hot = [name for name, cost in total.most_common()
-           if cost > 0 and not name.startswith("(") and name not in ambiguous]
+            own_costs(profile, total, runs)
+    named = [name for name, cost in total.items() if cost > 0 and not name.startswith(("(", "0x"))]
+    hot = sorted(named, key=lambda name: (-runs[name], -total[name], name))
     (HERE / "hot_symbols.txt").write_text("\n".join(hot) + "\n")
     print("%d functions written to %s" % (len(hot), HERE / "hot_symbols.txt"))
 

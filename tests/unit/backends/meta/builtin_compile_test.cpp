@@ -56,7 +56,7 @@ TEST_CASE("every built-in template carries the tokens the lexer makes of it") {
     REQUIRE(stored);
     REQUIRE(stored->size() == lexed.size());
     for (size_t i = 0; i < lexed.size(); ++i) {
-      CHECK(((*stored)[i].kind == lexed[i].kind && (*stored)[i].text == lexed[i].text &&
+      CHECK(((*stored)[i].kind == lexed[i].kind && (*stored)[i].length == lexed[i].length &&
              (*stored)[i].pos == lexed[i].pos));
     }
   }

@@ -14,7 +14,7 @@ namespace {
 bool same(const std::vector<Token>& a, const std::vector<Token>& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i) {
-    if (a[i].kind != b[i].kind || a[i].pos != b[i].pos || a[i].text != b[i].text) return false;
+    if (a[i].kind != b[i].kind || a[i].pos != b[i].pos || a[i].length != b[i].length) return false;
   }
   return true;
 }

@@ -7,12 +7,23 @@
 namespace smachac::generator {
 namespace {
 
-uint64_t fnv1a(std::string_view a, std::string_view b, uint64_t seed) {
-  constexpr uint64_t kPrime = 0x100000001b3ULL;
-  uint64_t h = seed;
-  for (unsigned char c : a) h = (h ^ c) * kPrime;
-  h = (h ^ 0xffU) * kPrime;  // separator: no file name / path split collides with another
-  for (unsigned char c : b) h = (h ^ c) * kPrime;
+/// The two hashes, of the same bytes, computed in one pass.
+struct HashPair {
+  uint64_t first = 0xcbf29ce484222325ULL;
+  uint64_t second = 0x84222325cbf29ce4ULL;
+
+  void add(unsigned char c) {
+    constexpr uint64_t kPrime = 0x100000001b3ULL;
+    first = (first ^ c) * kPrime;
+    second = (second ^ c) * kPrime;
+  }
+};
+
+HashPair fnv1a(std::string_view a, std::string_view b) {
+  HashPair h;
+  for (unsigned char c : a) h.add(c);
+  h.add(0xffU);  // separator: no file name / path split collides with another
+  for (unsigned char c : b) h.add(c);
   return h;
 }
 
@@ -22,9 +33,9 @@ uint64_t mix(uint64_t z) {
   return z ^ (z >> 31);
 }
 
-void appendHex(std::string& out, uint64_t v) {
+void writeHex(char* out, uint64_t v) {
   constexpr char kDigits[] = "0123456789abcdef";
-  for (int shift = 60; shift >= 0; shift -= 4) out += kDigits[(v >> shift) & 0xf];
+  for (int shift = 60; shift >= 0; shift -= 4) *out++ = kDigits[(v >> shift) & 0xf];
 }
 
 std::string_view baseName(std::string_view path) {
@@ -36,10 +47,10 @@ std::string_view baseName(std::string_view path) {
 
 std::string stateUuid(std::string_view script_path, std::string_view state_path) {
   std::string_view file = baseName(script_path);
-  std::string hex;
-  hex.reserve(32);
-  appendHex(hex, mix(fnv1a(file, state_path, 0xcbf29ce484222325ULL)));
-  appendHex(hex, mix(fnv1a(file, state_path, 0x84222325cbf29ce4ULL)));
+  HashPair h = fnv1a(file, state_path);
+  std::string hex(32, '0');
+  writeHex(hex.data(), mix(h.first));
+  writeHex(hex.data() + 16, mix(h.second));
   hex[12] = '4';
   constexpr char kVariant[] = "89ab";
   hex[16] = kVariant[(hex[16] <= '9' ? hex[16] - '0' : hex[16] - 'a' + 10) & 3];

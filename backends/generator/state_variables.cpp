@@ -6,22 +6,22 @@
 namespace smachac::generator {
 namespace {
 
-void setIfNonEmpty(tmpl::Value& vars, std::string_view key, tmpl::Value value, bool present) {
-  if (present) vars.dict().setString(key, std::move(value));
-}
+/// Entries a state's variables make room for at once: its own (at most 13 besides its script
+/// keys) and those of its level that the generator adds (parent names, the base's exports).
+constexpr size_t kStateVariablesRoom = 24;
 
-tmpl::Value transitionsValue(const ir::State& state) {
+tmpl::Value transitionsValue(const ir::State& state, ValueConverter& converter) {
   tmpl::Value dict = tmpl::Value::newDict();
   for (const ir::Transition& t : state.transitions) {
-    dict.dict().setString(t.outcome.text, tmpl::Value::string(t.target.text));
+    dict.dict().set(converter.text(t.outcome.text), converter.text(t.target.text));
   }
   return dict;
 }
 
-tmpl::Value remappingValue(const ir::State& state) {
+tmpl::Value remappingValue(const ir::State& state, ValueConverter& converter) {
   tmpl::Value dict = tmpl::Value::newDict();
   for (const ir::Remap& r : state.remapping) {
-    dict.dict().setString(r.key.text, tmpl::Value::string(r.parent_key.text));
+    dict.dict().setString(r.key.text, converter.text(r.parent_key.text));
   }
   return dict;
 }
@@ -32,12 +32,12 @@ tmpl::Value argumentsValue(const std::vector<ir::Argument>& args, ValueConverter
   return dict;
 }
 
-tmpl::Value outcomeMapValue(const ir::State& state) {
+tmpl::Value outcomeMapValue(const ir::State& state, ValueConverter& converter) {
   tmpl::Value dict = tmpl::Value::newDict();
   for (const ir::OutcomeMapEntry& entry : state.outcome_map) {
     tmpl::Value conditions = tmpl::Value::newDict();
     for (const ir::OutcomeCondition& c : entry.conditions) {
-      conditions.dict().setString(c.child.text, tmpl::Value::string(c.child_outcome.text));
+      conditions.dict().setString(c.child.text, converter.text(c.child_outcome.text));
     }
     dict.dict().setString(entry.outcome.text, conditions);
   }
@@ -47,40 +47,51 @@ tmpl::Value outcomeMapValue(const ir::State& state) {
 }  // namespace
 
 void addStateKeys(const ir::State& state, tmpl::Value& vars, ValueConverter& converter) {
-  setIfNonEmpty(vars, "outcomes", converter.names(state.outcomes), !state.outcomes.empty());
-  setIfNonEmpty(vars, "input_keys", converter.names(state.input_keys), !state.input_keys.empty());
-  setIfNonEmpty(vars, "output_keys", converter.names(state.output_keys),
-                !state.output_keys.empty());
-  setIfNonEmpty(vars, "transitions", transitionsValue(state), !state.transitions.empty());
-  setIfNonEmpty(vars, "remapping", remappingValue(state), !state.remapping.empty());
-  setIfNonEmpty(vars, "userdata", argumentsValue(state.userdata, converter),
-                !state.userdata.empty());
-  if (state.params) vars.dict().setString("params", converter.convert(*state.params));
-  setIfNonEmpty(vars, "callbacks", argumentsValue(state.callbacks, converter),
-                !state.callbacks.empty());
-  setIfNonEmpty(vars, "outcome_map", outcomeMapValue(state), !state.outcome_map.empty());
+  tmpl::DictObject& dict = vars.dict();
+  auto set = [&](const tmpl::Value& key, tmpl::Value value) { dict.set(key, std::move(value)); };
+  if (!state.outcomes.empty()) set(converter.literal("outcomes"), converter.names(state.outcomes));
+  if (!state.input_keys.empty()) {
+    set(converter.literal("input_keys"), converter.names(state.input_keys));
+  }
+  if (!state.output_keys.empty()) {
+    set(converter.literal("output_keys"), converter.names(state.output_keys));
+  }
+  if (!state.transitions.empty()) {
+    set(converter.literal("transitions"), transitionsValue(state, converter));
+  }
+  if (!state.remapping.empty()) {
+    set(converter.literal("remapping"), remappingValue(state, converter));
+  }
+  if (!state.userdata.empty()) {
+    set(converter.literal("userdata"), argumentsValue(state.userdata, converter));
+  }
+  if (state.params) set(converter.literal("params"), converter.convert(*state.params));
+  if (!state.callbacks.empty()) {
+    set(converter.literal("callbacks"), argumentsValue(state.callbacks, converter));
+  }
+  if (!state.outcome_map.empty()) {
+    set(converter.literal("outcome_map"), outcomeMapValue(state, converter));
+  }
   if (state.default_outcome) {
-    vars.dict().setString("default_outcome", tmpl::Value::string(state.default_outcome->text));
+    set(converter.literal("default_outcome"), converter.text(state.default_outcome->text));
   }
-  for (const ir::Argument& a : state.args) {
-    vars.dict().setString(a.key.text, converter.convert(a.value));
-  }
+  for (const ir::Argument& a : state.args) dict.setString(a.key.text, converter.convert(a.value));
 }
 
 tmpl::Value stateVariables(const ir::State& state, std::string_view uuid,
                            ValueConverter& converter) {
   tmpl::Value vars = tmpl::Value::newDict();
-  std::string class_name = state.template_name ? state.template_name->text : "";
-  vars.dict().setString("class_name", tmpl::Value::string(class_name));
-  vars.dict().setString("name", tmpl::Value::string(state.name.text));
-  vars.dict().setString("uuid", tmpl::Value::string(std::string(uuid)));
+  vars.dict().reserve(kStateVariablesRoom);
+  vars.dict().set(converter.literal("class_name"), state.template_name
+                                                       ? converter.text(state.template_name->text)
+                                                       : tmpl::Value::string(std::string()));
+  vars.dict().set(converter.literal("name"), tmpl::Value::string(state.name.text));
+  vars.dict().set(converter.literal("uuid"), tmpl::Value::string(std::string(uuid)));
   addStateKeys(state, vars, converter);
   return vars;
 }
 
-void updateDict(tmpl::Value& to, const tmpl::Value& from) {
-  for (const auto& [key, value] : from.dict().entries()) to.dict().set(key, value);
-}
+void updateDict(tmpl::Value& to, const tmpl::Value& from) { to.dict().update(from.dict()); }
 
 tmpl::Value copyDict(const tmpl::Value& from) {
   tmpl::Value copy = tmpl::Value::newDict();

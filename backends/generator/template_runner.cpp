@@ -32,9 +32,11 @@ const std::vector<TemplateRunner::Block>& TemplateRunner::blocks(const std::stri
 }
 
 BlockCode TemplateRunner::renderBlocks(const std::string& name, const tmpl::Value& vars) {
+  const std::vector<Block>& template_blocks = blocks(name);
   BlockCode code;
+  code.reserve(template_blocks.size());
   // Every other block is removed from a block render anyway, the skipped ones included.
-  for (const Block& block : blocks(name)) {
+  for (const Block& block : template_blocks) {
     code.emplace_back(
         block.name, block.renders_empty ? std::string() : env_.renderBlock(name, block.name, vars));
   }

@@ -1,6 +1,7 @@
 // Conversion of IR values into template values.
 #include "backends/generator/template_values.h"
 
+#include <cstdint>
 #include <string>
 
 namespace smachac::generator {
@@ -58,8 +59,17 @@ tmpl::Value ValueConverter::convert(const ir::Value& value) {
 tmpl::Value ValueConverter::names(const std::vector<ir::Name>& names) {
   std::vector<tmpl::Value> items;
   items.reserve(names.size());
-  for (const ir::Name& name : names) items.push_back(tmpl::Value::string(name.text));
+  for (const ir::Name& name : names) items.push_back(text(name.text));
   return tmpl::Value::newList(std::move(items));
+}
+
+tmpl::Value ValueConverter::cachedText(const void* identity, std::string_view text) {
+  CachedText& slot = texts_[(reinterpret_cast<uintptr_t>(identity) >> 4) % kTextCacheSize];
+  if (slot.key != identity) {
+    slot.key = identity;
+    slot.value = tmpl::Value::string(std::string(text));
+  }
+  return slot.value;
 }
 
 void ValueConverter::referToBehaviorParams(std::unordered_map<uint32_t, std::string> refs) {

@@ -10,6 +10,7 @@
 // reference), which targets expose as a test so that their templates always quote it.
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -27,6 +28,15 @@ class ValueConverter {
   tmpl::Value convert(const ir::Value& value);
   /// A list of the names' texts.
   tmpl::Value names(const std::vector<ir::Name>& names);
+  /// A name's text as a template string. The strings of recent names are shared (strings are
+  /// immutable in templates): a state's outcomes, keys and targets mostly repeat its
+  /// neighbours', and each new string is an allocation a state's render would later free.
+  tmpl::Value text(const ir::Symbol& name) { return cachedText(&name.str(), name); }
+  /// A string literal as a template string, shared in the same way (a state's variable names).
+  template <size_t N>
+  tmpl::Value literal(const char (&text)[N]) {
+    return cachedText(text, std::string_view(text, N - 1));
+  }
   /// Whether `value` is a string that came from a `!str`-tagged scalar.
   bool isForcedString(const tmpl::Value& value) const;
   /// From now on, values marked with one of these behavior parameter references (→ name)
@@ -34,7 +44,18 @@ class ValueConverter {
   void referToBehaviorParams(std::unordered_map<uint32_t, std::string> refs);
 
  private:
+  /// The shared string of `text`, whose address `identity` is stable and names that text.
+  tmpl::Value cachedText(const void* identity, std::string_view text);
+
+  /// A direct-mapped cache of strings, keyed by the address of an interned text or a literal.
+  struct CachedText {
+    const void* key = nullptr;
+    tmpl::Value value;
+  };
+  static constexpr size_t kTextCacheSize = 64;
+
   std::unordered_map<uint32_t, std::string> param_refs_;
+  std::array<CachedText, kTextCacheSize> texts_;
   std::vector<tmpl::Value> forced_;  // keeps the objects alive, so their addresses stay unique
   std::unordered_set<const void*> forced_ids_;
 };

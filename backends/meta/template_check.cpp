@@ -3,6 +3,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <memory>
@@ -40,23 +41,21 @@ bool isImplicit(std::string_view key) {
          key == "autonomy";  // FlexBE autonomy levels, read by the flexbe target
 }
 
-std::set<std::string> givenKeys(const ir::State& s) {
-  std::set<std::string> keys;
-  auto note = [&](bool present, const char* key) {
-    if (present) keys.insert(key);
-  };
-  note(!s.outcomes.empty(), "outcomes");
-  note(!s.input_keys.empty(), "input_keys");
-  note(!s.output_keys.empty(), "output_keys");
-  note(!s.transitions.empty(), "transitions");
-  note(!s.remapping.empty(), "remapping");
-  note(!s.userdata.empty(), "userdata");
-  note(static_cast<bool>(s.params), "params");
-  note(!s.callbacks.empty(), "callbacks");
-  note(!s.outcome_map.empty(), "outcome_map");
-  note(static_cast<bool>(s.default_outcome), "default_outcome");
-  for (const ir::Argument& a : s.args) keys.insert(a.key.text);
-  return keys;
+/// Whether the script gives `s` the variable `key` (a state field or a script key): asked per
+/// template variable, without collecting the state's keys first (a big script has many states).
+bool givesKey(const ir::State& s, std::string_view key) {
+  if (key == "outcomes") return !s.outcomes.empty();
+  if (key == "input_keys") return !s.input_keys.empty();
+  if (key == "output_keys") return !s.output_keys.empty();
+  if (key == "transitions") return !s.transitions.empty();
+  if (key == "remapping") return !s.remapping.empty();
+  if (key == "userdata") return !s.userdata.empty();
+  if (key == "params") return static_cast<bool>(s.params);
+  if (key == "callbacks") return !s.callbacks.empty();
+  if (key == "outcome_map") return !s.outcome_map.empty();
+  if (key == "default_outcome") return static_cast<bool>(s.default_outcome);
+  return std::any_of(s.args.begin(), s.args.end(),
+                     [&](const ir::Argument& a) { return a.key.text == key; });
 }
 
 /// Keys that are not identifiers are reported by check-names already.
@@ -160,17 +159,16 @@ class Checker {
   }
 
   void checkRequired(const ir::State& s, const TemplateMeta& meta) {
-    std::set<std::string> given = givenKeys(s);
     std::map<int, std::vector<std::string>> groups;
     for (const TemplateVariable& v : meta.variables) {
       if (v.alternative_group >= 0) groups[v.alternative_group].push_back(v.name);
-      if (!v.required || given.contains(v.name) || isImplicit(v.name)) continue;
+      if (!v.required || isImplicit(v.name) || givesKey(s, v.name)) continue;
       diags_.emit<DiagKind::MissingTemplateVariable>(s.name.loc, s.name.text, s.template_name->text,
                                                      "`" + v.name + "`");
     }
     for (const auto& [group, names] : groups) {
       bool any = false;
-      for (const std::string& n : names) any = any || given.contains(n);
+      for (const std::string& n : names) any = any || givesKey(s, n);
       if (any) continue;
       std::string options;
       for (const std::string& n : names) options += (options.empty() ? "`" : " or `") + n + "`";
@@ -180,12 +178,12 @@ class Checker {
   }
 
   void checkArguments(const ir::State& s, const TemplateMeta& meta) {
-    std::vector<std::string> declared;
-    for (const TemplateVariable& v : meta.variables) declared.push_back(v.name);
     for (const ir::Argument& a : s.args) {
       const TemplateVariable* var = find(meta, a.key.text);
       if (!var) {
         if (isImplicit(a.key.text) || !isIdentifier(a.key.text)) continue;
+        std::vector<std::string> declared;
+        for (const TemplateVariable& v : meta.variables) declared.push_back(v.name);
         std::optional<std::string> match = closestMatch(a.key.text, declared);
         diags_.emit<DiagKind::UnknownTemplateVariable>(a.key.loc, a.key.text, s.template_name->text,
                                                        didYouMean(match));

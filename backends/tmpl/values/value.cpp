@@ -345,6 +345,24 @@ void DictObject::setString(std::string_view key, Value value) {
   append(Value::string(std::string(key)), std::move(value), hash);
 }
 
+void DictObject::update(const DictObject& from) {
+  reserve(entries_.size() + from.entries_.size());
+  for (size_t i = 0; i < from.entries_.size(); ++i) {
+    const auto& [key, value] = from.entries_[i];
+    size_t at = slotOf(key, from.hashes_[i]);
+    if (at != SIZE_MAX) {
+      entries_[at].second = value;
+    } else {
+      append(key, value, from.hashes_[i]);
+    }
+  }
+}
+
+void DictObject::reserve(size_t count) {
+  entries_.reserve(count);
+  hashes_.reserve(count);
+}
+
 void DictObject::append(Value key, Value value, size_t hash) {
   if (entries_.capacity() == 0) {  // most dicts are small: skip the 1, 2 steps of growth
     entries_.reserve(4);

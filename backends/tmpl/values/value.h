@@ -278,6 +278,11 @@ class DictObject final : public Object {
   const Value* findString(std::string_view key, size_t hash) const;
   void set(const Value& key, Value value);
   void setString(std::string_view key, Value value);
+  /// Python's dict.update(from): sets every entry of `from` in its order, with the hashes
+  /// `from` keeps (no key is hashed again).
+  void update(const DictObject& from);
+  /// Room for `count` entries in all, so that adding them moves no entry.
+  void reserve(size_t count);
   bool erase(const Value& key, Value* removed = nullptr);
   void clear();
   size_t size() const { return entries_.size(); }

@@ -61,5 +61,21 @@ TEST_CASE("a state's template variables: given keys only, a script `name` key wi
   CHECK(stateVariables(state, "u", c).dict().findString("name")->s() == "OTHER");
 }
 
+TEST_CASE("names with the same text share one string; a forced string is never shared") {
+  ValueConverter c;
+  std::vector<ir::Name> first = {{"succeeded", {}}, {"aborted", {}}};
+  std::vector<ir::Name> second = {{"succeeded", {}}};
+  tmpl::Value a = c.names(first);
+  tmpl::Value b = c.names(second);
+  CHECK(tmpl::repr(a) == "['succeeded', 'aborted']");
+  CHECK(a.list().items()[0].identity() == b.list().items()[0].identity());
+  CHECK(c.literal("outcomes").identity() == c.literal("outcomes").identity());
+  ir::Value forced = ir::Value::string("succeeded");
+  forced.forced_string = true;
+  tmpl::Value f = c.convert(forced);
+  CHECK(c.isForcedString(f));
+  CHECK_FALSE(c.isForcedString(c.names(second).list().items()[0]));
+}
+
 }  // namespace
 }  // namespace smachac::generator

@@ -124,6 +124,25 @@ TEST_CASE("dict keys: 1, 1.0 and True are one key; insertion order is kept") {
   CHECK_THROWS_WITH(d.dict().set(Value::newList(), Value::none()), "unhashable type: `list`");
 }
 
+TEST_CASE("dict update replaces same keys in place and appends new ones in order") {
+  Value to = Value::newDict();
+  to.dict().setString("a", Value::integer(1));
+  to.dict().set(Value::integer(1), Value::string("int"));
+  to.dict().setString("b", Value::integer(2));
+  Value from = Value::newDict();
+  from.dict().setString("c", Value::integer(3));
+  from.dict().set(Value::boolean(true), Value::string("bool"));  // the key 1 already there
+  from.dict().setString("a", Value::integer(4));
+  for (int i = 0; i < 20; ++i) from.dict().set(Value::integer(i + 10), Value::integer(i));
+  to.dict().update(from.dict());
+  CHECK(to.dict().size() == 24);
+  CHECK(str(*to.dict().findString("a")) == "4");
+  CHECK(str(*to.dict().find(Value::real(1.0))) == "bool");
+  CHECK(str(*to.dict().find(Value::integer(29))) == "19");  // found through the rebuilt index
+  CHECK(str(to.dict().entries()[3].first) == "c");
+  CHECK(from.dict().size() == 23);  // `from` is left as it was
+}
+
 TEST_CASE("containers have reference semantics") {
   Value list = Value::newList();
   Value alias = list;

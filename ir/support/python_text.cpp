@@ -35,22 +35,15 @@ void appendEscaped(std::string& out, char32_t cp, char quote) {
   }
 }
 
-/// Whether Python prints byte `c` of a string as itself.
-bool printsAsItself(unsigned char c, char quote) {
-  return c >= 0x20 && c < 0x7F && c != '\\' && c != static_cast<unsigned char>(quote);
-}
-
-/// Appends `text` escaped: each run of bytes that print as themselves in one piece.
 void appendEscapedText(std::string& out, std::string_view text, char quote) {
   for (size_t pos = 0; pos < text.size();) {
-    size_t run_end = pos;
-    while (run_end < text.size() &&
-           printsAsItself(static_cast<unsigned char>(text[run_end]), quote)) {
-      ++run_end;
+    unsigned char c = static_cast<unsigned char>(text[pos]);
+    if (c >= 0x20 && c < 0x7F && c != '\\' && c != static_cast<unsigned char>(quote)) {
+      out += static_cast<char>(c);
+      ++pos;
+      continue;
     }
-    out.append(text.data() + pos, run_end - pos);
-    pos = run_end;
-    if (pos < text.size()) appendEscaped(out, unicode::decode(text, pos), quote);
+    appendEscaped(out, unicode::decode(text, pos), quote);
   }
 }
 

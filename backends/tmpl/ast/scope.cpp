@@ -9,140 +9,14 @@
 #include <optional>
 
 #include "backends/tmpl/ast/ast_walk.h"
+#include "backends/tmpl/ast/scope_symbols.h"
 
 namespace smachac::tmpl {
 namespace {
 
-using Name = const std::string*;
-
-struct Load {
-  SlotInitKind kind;
-  const struct Symbols* alias_owner = nullptr;
-};
-
-// Jinja's Symbols: refs (names owned by this level), their load instructions and stores.
-struct Symbols {
-  const Symbols* parent;
-  int level;
-  mutable bool capturing = false;  // a closure is created at this level or below
-  std::vector<Name> refs;
-  std::vector<std::pair<Name, Load>> loads;
-  std::vector<Name> stores;
-
-  explicit Symbols(const Symbols* p) : parent(p), level(p ? p->level + 1 : 0) {}
-
-  bool owns(Name n) const { return std::find(refs.begin(), refs.end(), n) != refs.end(); }
-  bool stored(Name n) const { return std::find(stores.begin(), stores.end(), n) != stores.end(); }
-  uint16_t slotOf(Name n) const {
-    return static_cast<uint16_t>(std::find(refs.begin(), refs.end(), n) - refs.begin());
-  }
-
-  const Symbols* findRef(Name n) const {
-    for (const Symbols* s = this; s; s = s->parent) {
-      if (s->owns(n)) return s;
-    }
-    return nullptr;
-  }
-
-  void setLoad(Name n, Load load) {
-    for (auto& entry : loads) {
-      if (entry.first == n) {
-        entry.second = load;
-        return;
-      }
-    }
-    loads.emplace_back(n, load);
-  }
-
-  void defineRef(Name n, Load load) {
-    if (!owns(n)) refs.push_back(n);
-    setLoad(n, load);
-  }
-
-  void addStore(Name n) {
-    if (!stored(n)) stores.push_back(n);
-  }
-
-  void store(Name n) {
-    addStore(n);
-    if (owns(n)) return;
-    if (parent) {
-      if (const Symbols* outer = parent->findRef(n)) {
-        defineRef(n, {SlotInitKind::Alias, outer});
-        return;
-      }
-    }
-    defineRef(n, {SlotInitKind::Undefined});
-  }
-
-  void declareParameter(Name n) {
-    addStore(n);
-    defineRef(n, {SlotInitKind::Parameter});
-  }
-
-  void load(Name n) {
-    if (!findRef(n)) defineRef(n, {SlotInitKind::Resolve});
-  }
-
-  // The branches are copies of this level taken before they ran (Jinja's sym.copy()), and
-  // this level is unchanged since: refs and stores only grow at their ends and loads are
-  // changed in place or appended, so each branch begins with this level's entries in the
-  // same order, and only what follows them needs looking up. A null branch ran nothing (an
-  // absent elif or else), which Jinja merges as a plain copy of this level.
-  void branchUpdate(std::initializer_list<const Symbols*> branches) {
-    const size_t old_refs = refs.size();
-    const size_t old_loads = loads.size();
-    const size_t old_stores = stores.size();
-    std::vector<std::pair<Name, size_t>> counts;
-    for (const Symbols* branch : branches) {
-      if (!branch) continue;
-      const Symbols& b = *branch;
-      for (size_t i = old_stores; i < b.stores.size(); ++i) {
-        Name t = b.stores[i];
-        auto it = std::find_if(counts.begin(), counts.end(), [&](auto& c) { return c.first == t; });
-        if (it == counts.end()) {
-          counts.emplace_back(t, 1);
-        } else {
-          ++it->second;
-        }
-      }
-    }
-    for (const Symbols* branch : branches) {
-      if (!branch) continue;
-      const Symbols& b = *branch;
-      for (size_t i = old_refs; i < b.refs.size(); ++i) {
-        if (!owns(b.refs[i])) refs.push_back(b.refs[i]);
-      }
-      for (size_t i = old_loads; i < b.loads.size(); ++i) {
-        setLoad(b.loads[i].first, b.loads[i].second);
-      }
-      for (size_t i = old_stores; i < b.stores.size(); ++i) addStore(b.stores[i]);
-    }
-    // Every branch sets every entry this level had, so the last branch's values hold (this
-    // level's own, when that branch ran nothing).
-    if (const Symbols* last = *(branches.end() - 1)) {
-      for (size_t i = 0; i < old_loads; ++i) loads[i].second = last->loads[i].second;
-    }
-    for (const auto& [n, count] : counts) {
-      if (count == branches.size()) continue;
-      const Symbols* outer = parent ? parent->findRef(n) : nullptr;
-      setLoad(n, outer ? Load{SlotInitKind::Alias, outer} : Load{SlotInitKind::Resolve});
-    }
-  }
-
-  // Jinja's dump_stores: every name stored in this frame or an outer one.
-  std::vector<Name> dumpStores() const {
-    std::vector<Name> out;
-    for (const Symbols* s = this; s; s = s->parent) {
-      std::vector<Name> sorted = s->stores;
-      std::sort(sorted.begin(), sorted.end(), [](Name a, Name b) { return *a < *b; });
-      for (Name n : sorted) {
-        if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
-      }
-    }
-    return out;
-  }
-};
+using scopes::Load;
+using scopes::Name;
+using scopes::Symbols;
 
 // Jinja's find_undeclared: which of `names` are loaded before any store, not entering blocks.
 // Names are interned, so they are compared by address.

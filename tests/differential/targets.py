@@ -15,6 +15,7 @@ preempt_after (seconds), each target's own preempt request reaches the running m
 import ast
 import json
 import os
+import shlex
 import subprocess
 import threading
 
@@ -46,7 +47,9 @@ class Toolchain:
         self._header = None
 
     def cxx_flags(self):
-        return [self.cxx, "-std=c++20", "-O0", "-pthread", "-I", self.runtime_include]
+        sanitizers = shlex.split(os.environ.get("SMACHAC_E2E_CXXFLAGS", ""))
+        return [self.cxx, "-std=c++20", "-O0", "-pthread", *sanitizers, "-I",
+                self.runtime_include]
 
     def precompiled_runtime_header(self):
         """A header that includes the runtime, precompiled once per run (each program's build

@@ -17,6 +17,7 @@ SMACHAC = os.environ["SMACHAC"]
 ROOT = os.environ["SMACHAC_ROOT"]
 RUNTIME_LIBRARY = os.environ.get("SMACHAC_RUNTIME_LIBRARY", "")
 CXX = os.environ.get("SMACHAC_CXX", "c++")
+SANITIZER_FLAGS = os.environ.get("SMACHAC_E2E_CXXFLAGS", "")  # those of a sanitized tree
 
 
 def readme_blocks():
@@ -90,7 +91,9 @@ def as_built(command):
     command = command.replace("build/stdlib/runtime/libsmachac_runtime.a", RUNTIME_LIBRARY)
     command = command.replace("-I stdlib/runtime/include",
                               "-I " + os.path.join(ROOT, "stdlib", "runtime", "include"))
-    return command.replace("c++ ", CXX + " ", 1) if command.startswith("c++ ") else command
+    if not command.startswith("c++ "):
+        return command
+    return command.replace("c++ ", " ".join(filter(None, [CXX, SANITIZER_FLAGS])) + " ", 1)
 
 
 def smachac(*args):

@@ -88,6 +88,51 @@ const SkipPolicy& EnvironmentImpl::blockPolicy(const Template& tmpl, const std::
   return *policy;
 }
 
+namespace {
+
+// Where blockRender's cache looks first: a cheap mix of the sizes and three bytes of the block
+// name (a collision costs a probe, or a slow lookup past the last probe).
+size_t blockRenderHome(std::string_view name, std::string_view block) {
+  if (block.empty()) return name.size();
+  auto byte = [&](size_t i) { return static_cast<size_t>(static_cast<unsigned char>(block[i])); };
+  return block.size() * 31 + byte(0) * 7 + byte(block.size() / 2) * 13 + byte(block.size() - 1) +
+         name.size();
+}
+
+}  // namespace
+
+std::pair<const Template*, const SkipPolicy*> EnvironmentImpl::blockRender(std::string_view name,
+                                                                           std::string_view block) {
+  if (block_renders_.empty()) block_renders_.resize(kBlockRenderSlots);
+  size_t home = blockRenderHome(name, block);
+  for (size_t probe = 0; probe < kBlockRenderProbes; ++probe) {
+    const BlockRender& cached = block_renders_[(home + probe) % kBlockRenderSlots];
+    if (!cached.tmpl) break;
+    if (cached.block == block && cached.name == name) return {cached.tmpl, cached.policy};
+  }
+  const std::string* only = intern(block);
+  const Template& tmpl = load(name);
+  const SkipPolicy& policy = blockPolicy(tmpl, only);
+  size_t probe = 0;  // the first empty slot of the probes, else the last one
+  while (probe + 1 < kBlockRenderProbes && block_renders_[(home + probe) % kBlockRenderSlots].tmpl)
+    ++probe;
+  block_renders_[(home + probe) % kBlockRenderSlots] = {std::string(name), std::string(block),
+                                                        &tmpl, &policy};
+  return {&tmpl, &policy};
+}
+
+std::string* EnvironmentImpl::takeScratch() {
+  if (scratch_taken_) return nullptr;
+  scratch_taken_ = true;
+  scratch_.clear();
+  return &scratch_;
+}
+
+void EnvironmentImpl::returnScratch() {
+  scratch_taken_ = false;
+  if (scratch_.capacity() > kMaxScratchCapacity) std::string().swap(scratch_);
+}
+
 Ref<Context> EnvironmentImpl::takeSpareContext() {
   if (spare_contexts_.empty()) return Ref<Context>(new Context());
   Ref<Context> ctx = std::move(spare_contexts_.back());
@@ -135,12 +180,11 @@ auto guarded(std::string_view name, F&& body) -> decltype(body()) {
   }
 }
 
-std::string renderWith(EnvironmentImpl& env, const Template& tmpl, const Value& context,
-                       const SkipPolicy& policy) {
+// Renders `tmpl` under `policy`, appending to `out`.
+void renderInto(EnvironmentImpl& env, const Template& tmpl, const Value& context,
+                const SkipPolicy& policy, std::string& out) {
   Exec ex(env, policy);
   Ref<Context> ctx = newContext(ex, tmpl, contextDict(context));
-  std::string out;
-  out.reserve(256);
   if (policy.keeps_prologue && !policy.prologue_recorded) {
     policy.prologue = recordPrologue(ex, tmpl);
     policy.prologue_recorded = true;
@@ -150,7 +194,48 @@ std::string renderWith(EnvironmentImpl& env, const Template& tmpl, const Value& 
   } else {
     renderRoot(ex, tmpl, *ctx, out);
   }
+}
+
+std::string renderWith(EnvironmentImpl& env, const Template& tmpl, const Value& context,
+                       const SkipPolicy& policy) {
+  std::string out;
+  out.reserve(256);
+  renderInto(env, tmpl, context, policy, out);
   return out;
+}
+
+// The environment's scratch text for one render, or a text of its own when a render that
+// runs already holds it.
+class ScratchText {
+ public:
+  explicit ScratchText(EnvironmentImpl& env) : env_(env), text_(env.takeScratch()) {
+    if (!text_) text_ = &own_;
+  }
+  ~ScratchText() {
+    if (text_ != &own_) env_.returnScratch();
+  }
+  ScratchText(const ScratchText&) = delete;
+  ScratchText& operator=(const ScratchText&) = delete;
+  std::string& text() { return *text_; }
+
+ private:
+  EnvironmentImpl& env_;
+  std::string own_;
+  std::string* text_;
+};
+
+// renderBlock's result: the render stripped, with "\n" appended unless empty. The render goes
+// to the scratch text, so that it allocates only its result, and nothing when it is empty.
+std::string renderStripped(EnvironmentImpl& env, const Template& tmpl, const Value& context,
+                           const SkipPolicy& policy) {
+  ScratchText scratch(env);
+  renderInto(env, tmpl, context, policy, scratch.text());
+  std::string_view stripped = unicode::strip(scratch.text());
+  if (stripped.empty()) return std::string();
+  std::string result;
+  result.reserve(stripped.size() + 1);
+  result.append(stripped).push_back('\n');
+  return result;
 }
 
 }  // namespace
@@ -189,24 +274,15 @@ std::string Environment::render(std::string_view name, const Value& context,
 std::string Environment::renderBlock(std::string_view name, std::string_view block,
                                      const Value& context, const RenderOptions& options) {
   return guarded(name, [&] {
-    const std::string* only = intern(block);
-    const Template& tmpl = impl_->load(name);
-    SkipPolicy explicit_policy;
-    if (!options.skip_blocks.empty()) {
-      explicit_policy = explicitSkips(options);
-      explicit_policy.only = only;
-      explicit_policy.scope = &impl_->reachableByAddress(tmpl);
+    if (options.skip_blocks.empty()) {
+      auto [tmpl, policy] = impl_->blockRender(name, block);
+      return renderStripped(*impl_, *tmpl, context, *policy);
     }
-    const SkipPolicy& policy =
-        options.skip_blocks.empty() ? impl_->blockPolicy(tmpl, only) : explicit_policy;
-    std::string out = renderWith(*impl_, tmpl, context, policy);
-    std::string_view stripped = unicode::strip(out);
-    if (stripped.empty()) return std::string();
-    size_t begin = static_cast<size_t>(stripped.data() - out.data());
-    out.resize(begin + stripped.size());
-    out.erase(0, begin);
-    out += '\n';
-    return out;
+    const Template& tmpl = impl_->load(name);
+    SkipPolicy policy = explicitSkips(options);
+    policy.only = intern(block);
+    policy.scope = &impl_->reachableByAddress(tmpl);
+    return renderStripped(*impl_, tmpl, context, policy);
   });
 }
 

@@ -34,6 +34,11 @@ class EnvironmentImpl {
   /// renderBlock's skip policy for block `only` of `tmpl` (without skip_blocks), kept for the
   /// environment's life so that it keeps the masks it finds (SkipPolicy::masks).
   const SkipPolicy& blockPolicy(const Template& tmpl, const std::string* only);
+  /// renderBlock's template and skip policy for block `block` of template `name`, found by the
+  /// two texts in a small cache (a compile renders the same few pairs thousands of times)
+  /// before the template table, the intern pool and the policy table.
+  std::pair<const Template*, const SkipPolicy*> blockRender(std::string_view name,
+                                                            std::string_view block);
   /// Forgets the cached default modules (after globals change).
   void clearModules();
   ~EnvironmentImpl();
@@ -45,6 +50,10 @@ class EnvironmentImpl {
   /// context and its tables for each of the thousands of small renders SMACHA makes).
   Ref<Context> takeSpareContext();
   void addSpareContext(Ref<Context> ctx);
+  /// An empty text that renderBlock renders into and returns (it keeps its capacity for the
+  /// next render, up to kMaxScratchCapacity); nullptr while a render holds it.
+  std::string* takeScratch();
+  void returnScratch();
 
   Registry& registry() { return registry_; }
   Loader& loader() { return loader_; }
@@ -73,10 +82,22 @@ class EnvironmentImpl {
   std::unordered_map<std::pair<const Template*, const std::string*>, std::unique_ptr<SkipPolicy>,
                      PolicyKeyHash>
       block_policies_;
+  struct BlockRender {
+    std::string name;
+    std::string block;
+    const Template* tmpl = nullptr;
+    const SkipPolicy* policy = nullptr;
+  };
+  static constexpr size_t kBlockRenderSlots = 64;  // by a mix of the names (blockRenderHome)
+  static constexpr size_t kBlockRenderProbes = 4;  // linearly from there
+  std::vector<BlockRender> block_renders_;         // sized on the first renderBlock
   std::vector<Ref<Context>> kept_contexts_;
   std::vector<Ref<Frame>> kept_frames_;
   static constexpr size_t kMaxSpareContexts = 8;
   std::vector<Ref<Context>> spare_contexts_;
+  static constexpr size_t kMaxScratchCapacity = size_t{64} << 10;
+  std::string scratch_;
+  bool scratch_taken_ = false;
 };
 
 inline const Registry& registryOf(EnvironmentImpl& env) { return env.registry(); }

@@ -125,7 +125,7 @@ std::optional<std::string> Loader::resolveScriptName(std::string_view raw_name) 
   }
   if (auto found = resolveIn(memory_entries, base)) return subdir + *found;
   for (const std::string& dir : dirs_) {
-    std::vector<std::string> files = regularFilesIn(joinTemplatePath(dir, subdir));
+    const std::vector<std::string>& files = listings_.regularFilesIn(joinTemplatePath(dir, subdir));
     if (auto found = resolveIn({files.begin(), files.end()}, base)) return subdir + *found;
   }
   for (const std::string& set : builtin_sets_) {

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "backends/tmpl/template_files.h"
 #include "ir/support/embedded_file.h"
 
 namespace smachac::tmpl {
@@ -51,6 +52,7 @@ class Loader {
   // Environment's builtins). A sorted vector: one allocation for a table of a hundred.
   std::vector<EmbeddedFile> builtins_;
   std::map<std::string, std::string, std::less<>> memory_;
+  mutable Listings listings_;  // of the directories searched, while they stay the same
 };
 
 /// Normalises a template name like Jinja2's split_template_path; nullopt if it escapes the

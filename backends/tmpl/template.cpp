@@ -23,9 +23,10 @@ Template::Template(std::string name, std::string origin, std::string_view source
     source_ = owned_source_;
   }
   try {
-    std::optional<std::vector<Token>> stored = unpackTokens(tokens, source_);
-    std::vector<Token> lexed = stored ? std::move(*stored) : tokenize(source_);
-    ParsedTemplate parsed = parseTemplate(source_, lexed, registry, arena_, builtin);
+    std::optional<std::span<const Token>> stored = storedTokens(tokens, source_);
+    std::vector<Token> lexed = stored ? std::vector<Token>() : tokenize(source_);
+    std::span<const Token> stream = stored ? *stored : std::span<const Token>(lexed);
+    ParsedTemplate parsed = parseTemplate(source_, stream, registry, arena_, builtin);
     analyzeScopes(parsed, root_frame_);
     body_ = std::move(parsed.body);
     blocks_ = std::move(parsed.blocks);
@@ -33,7 +34,7 @@ Template::Template(std::string name, std::string origin, std::string_view source
     has_extends_ = parsed.has_extends;
     names_templates_ = parsed.names_templates;
     deferred_ = std::move(parsed.deferred);
-    if (!deferred_.empty()) tokens_ = std::move(lexed);
+    if (!deferred_.empty()) keepTokens(stream, std::move(lexed));
   } catch (const SyntaxFault& fault) {
     throw error(fault.pos, fault.message);
   }
@@ -52,7 +53,12 @@ void Template::completeMacro(const MacroStmt& macro) const {
   }
   it->macro->deferred = false;
   deferred_.erase(it);
-  if (deferred_.empty()) std::vector<Token>().swap(tokens_);
+  if (deferred_.empty()) keepTokens({}, {});
+}
+
+void Template::keepTokens(std::span<const Token> stream, std::vector<Token> lexed) const {
+  lexed_tokens_ = std::move(lexed);
+  tokens_ = lexed_tokens_.empty() ? stream : std::span<const Token>(lexed_tokens_);
 }
 
 const BlockStmt* Template::block(std::string_view name) const {

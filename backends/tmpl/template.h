@@ -77,6 +77,9 @@ class Template {
   void completeMacro(const MacroStmt& macro) const;
 
  private:
+  /// Keeps the token stream for the deferred macros (`lexed` owns it unless it is empty).
+  void keepTokens(std::span<const Token> stream, std::vector<Token> lexed) const;
+
   std::string name_;
   std::string origin_;
   std::string owned_source_;  // the normalised source, unless it is read in place
@@ -90,7 +93,9 @@ class Template {
   bool has_extends_ = false;
   bool names_templates_ = false;
   mutable std::vector<std::unique_ptr<SkipMask>> skip_masks_;
-  mutable std::vector<Token> tokens_;  // kept while macros are deferred
+  // The tokens, kept while macros are deferred: the build's, read in place, or the lexer's.
+  mutable std::span<const Token> tokens_;
+  mutable std::vector<Token> lexed_tokens_;
   mutable std::vector<DeferredMacro> deferred_;
 };
 

@@ -4,7 +4,7 @@
 namespace smachac::tmpl {
 namespace {
 
-void forEachArg(const ArgList& args, const std::function<void(Expr*)>& fn) {
+void forEachArg(const ArgList& args, Visit<void(Expr*)> fn) {
   for (Expr* e : args.args) fn(e);
   for (const auto& kw : args.kwargs) fn(kw.second);
   if (args.dyn_args) fn(args.dyn_args);
@@ -13,7 +13,7 @@ void forEachArg(const ArgList& args, const std::function<void(Expr*)>& fn) {
 
 }  // namespace
 
-void forEachChild(const Expr* expr, const std::function<void(Expr*)>& fn) {
+void forEachChild(const Expr* expr, Visit<void(Expr*)> fn) {
   switch (expr->kind) {
     case ExprKind::Const:
     case ExprKind::Name:

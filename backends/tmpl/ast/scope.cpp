@@ -4,9 +4,10 @@
 #include "backends/tmpl/ast/scope.h"
 
 #include <algorithm>
-#include <initializer_list>
+#include <array>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "backends/tmpl/ast/ast_walk.h"
 #include "backends/tmpl/ast/scope_symbols.h"
@@ -22,9 +23,7 @@ using scopes::Symbols;
 // Names are interned, so they are compared by address.
 class UndeclaredFinder {
  public:
-  explicit UndeclaredFinder(std::initializer_list<const char*> names) {
-    for (const char* n : names) names_.push_back(intern(n));
-  }
+  explicit UndeclaredFinder(std::span<const Name> names) : names_(names.begin(), names.end()) {}
 
   void visitBody(const Body& body) {
     for (const Stmt* s : body) {
@@ -49,33 +48,30 @@ class UndeclaredFinder {
     forEachChild(e, [this](Expr* c) { visitExpr(c); });
   }
 
-  bool has(const char* name) const { return has(intern(name)); }
-
- private:
   bool has(Name name) const {
     return std::find(undeclared_.begin(), undeclared_.end(), name) != undeclared_.end();
   }
 
+ private:
   std::vector<Name> names_;
   std::vector<Name> undeclared_;
 };
 
-bool undeclared(const Body& body, const char* name) {
-  UndeclaredFinder finder({name});
+bool undeclared(const Body& body, Name name) {
+  UndeclaredFinder finder(std::span<const Name>(&name, 1));
   finder.visitBody(body);
   return finder.has(name);
 }
 
 bool containsScopedBlock(const Body& body) {
   bool found = false;
-  std::function<void(const Body&)> visit = [&](const Body& b) {
-    for (const Stmt* s : b) {
-      if (s->kind == StmtKind::Block && static_cast<const BlockStmt*>(s)->scoped) found = true;
-      forEachPart(s, StmtVisitor{[](Expr*) {}, visit});
-    }
-  };
-  visit(body);
-  return found;
+  for (const Stmt* s : body) {
+    if (s->kind == StmtKind::Block && static_cast<const BlockStmt*>(s)->scoped) return true;
+    forEachPart(s, StmtVisitor{[](Expr*) {},
+                               [&](const Body& b) { found = found || containsScopedBlock(b); }});
+    if (found) return true;
+  }
+  return false;
 }
 
 class Analyzer {
@@ -313,21 +309,28 @@ class Analyzer {
   // --- nested frames ---------------------------------------------------------------------
 
   void checkLoopNotAssigned(ForStmt* s) {
-    std::function<void(Expr*)> check_expr = [&](Expr* e) {
-      if (e->kind == ExprKind::Name) {
-        auto* n = static_cast<NameExpr*>(e);
-        if (n->ctx != NameCtx::Load && *n->name == "loop") {
-          throw SyntaxFault{e->pos, "cannot assign to the special `loop` variable"};
-        }
-        return;
+    checkNotLoop(s->target);
+    checkNotLoopIn(s->body);
+  }
+
+  // Raises the error of a `loop` stored to in `e` (a loop's target, or any expression of its
+  // body: a `set` or a nested loop's target).
+  static void checkNotLoop(Expr* e) {
+    if (e->kind == ExprKind::Name) {
+      auto* n = static_cast<NameExpr*>(e);
+      if (n->ctx != NameCtx::Load && *n->name == "loop") {
+        throw SyntaxFault{e->pos, "cannot assign to the special `loop` variable"};
       }
-      forEachChild(e, check_expr);
-    };
-    std::function<void(const Body&)> check_body = [&](const Body& body) {
-      for (Stmt* st : body) forEachPart(st, StmtVisitor{check_expr, check_body});
-    };
-    check_expr(s->target);
-    check_body(s->body);
+      return;
+    }
+    forEachChild(e, [](Expr* c) { checkNotLoop(c); });
+  }
+
+  static void checkNotLoopIn(const Body& body) {
+    for (Stmt* st : body) {
+      forEachPart(st, StmtVisitor{[](Expr* e) { checkNotLoop(e); },
+                                  [](const Body& b) { checkNotLoopIn(b); }});
+    }
   }
 
   static void collectTargetNames(Expr* target, std::vector<NameExpr*>& out) {
@@ -342,8 +345,9 @@ class Analyzer {
     checkLoopNotAssigned(s);
     resolveExpr(s->iter, outer);
     Symbols& loop = newTable(&outer);
-    bool extended = undeclared(s->body, "loop") || containsScopedBlock(s->body);
-    if (extended) loop.declareParameter(intern("loop"));
+    Name loop_name = specials().loop;
+    bool extended = undeclared(s->body, loop_name) || containsScopedBlock(s->body);
+    if (extended) loop.declareParameter(loop_name);
     visitExpr(s->target, loop, true);
     visitBody(s->body, loop);
     Symbols& else_sym = newTable(&outer);
@@ -360,7 +364,7 @@ class Analyzer {
     resolveExpr(s->target, loop);
     resolveBody(s->body, loop, false);
     resolveBody(s->orelse, else_sym, false);
-    if (extended) s->loop_slot = loop.slotOf(intern("loop"));
+    if (extended) s->loop_slot = loop.slotOf(loop_name);
     s->loop_frame = layoutOf(loop);
     s->else_frame = layoutOf(else_sym);
     s->test_frame = layoutOf(test);
@@ -368,10 +372,11 @@ class Analyzer {
 
   void analyzeBlock(BlockStmt* s) {
     Symbols& sym = newTable(nullptr);
-    if (undeclared(s->body, "super")) sym.declareParameter(intern("super"));
+    Name super_name = specials().super;
+    if (undeclared(s->body, super_name)) sym.declareParameter(super_name);
     visitBody(s->body, sym);
     resolveBody(s->body, sym, false);
-    if (sym.owns(intern("super"))) s->super_slot = sym.slotOf(intern("super"));
+    if (sym.owns(super_name)) s->super_slot = sym.slotOf(super_name);
     s->frame = layoutOf(sym);
   }
 
@@ -397,19 +402,21 @@ class Analyzer {
  private:
   void analyzeMacro(MacroStmt* s, Symbols& outer) {
     Symbols& sym = newTable(&outer);
-    UndeclaredFinder finder({"caller", "kwargs", "varargs"});
+    const std::array<Name, 3>& specials = this->specials().of_macro;  // caller, kwargs, varargs
+    Name caller = specials[0];
+    UndeclaredFinder finder(specials);
     finder.visitBody(s->body);
-    auto has_param = [&](const char* n) {
+    auto has_param = [&](Name n) {
       return std::any_of(s->params.begin(), s->params.end(),
-                         [&](NameExpr* p) { return *p->name == n; });
+                         [&](NameExpr* p) { return p->name == n; });
     };
     for (NameExpr* p : s->params) visitExpr(p, sym);
-    for (const char* special : {"caller", "kwargs", "varargs"}) {
-      if (finder.has(special) && !has_param(special)) sym.declareParameter(intern(special));
+    for (Name special : specials) {
+      if (finder.has(special) && !has_param(special)) sym.declareParameter(special);
     }
-    if (finder.has("caller") && has_param("caller")) {
+    if (finder.has(caller) && has_param(caller)) {
       size_t index = 0;
-      while (*s->params[index]->name != "caller") ++index;
+      while (s->params[index]->name != caller) ++index;
       if (index + s->defaults.size() < s->params.size()) {
         throw SyntaxFault{s->params[index]->pos,
                           "the special `caller` argument must be omitted or given a default"};
@@ -420,12 +427,12 @@ class Analyzer {
     for (NameExpr* p : s->params) resolveExpr(p, sym);
     for (Expr* d : s->defaults) resolveExpr(d, sym);
     resolveBody(s->body, sym, false);
-    auto slot_if_declared = [&](const char* n) {
-      return finder.has(n) && !has_param(n) ? static_cast<int>(sym.slotOf(intern(n))) : -1;
+    auto slot_if_declared = [&](Name n) {
+      return finder.has(n) && !has_param(n) ? static_cast<int>(sym.slotOf(n)) : -1;
     };
-    s->caller_slot = slot_if_declared("caller");
-    s->kwargs_slot = slot_if_declared("kwargs");
-    s->varargs_slot = slot_if_declared("varargs");
+    s->caller_slot = slot_if_declared(caller);
+    s->kwargs_slot = slot_if_declared(specials[1]);
+    s->varargs_slot = slot_if_declared(specials[2]);
     s->frame = layoutOf(sym);
   }
 
@@ -463,6 +470,7 @@ class Analyzer {
     FrameLayout layout;
     layout.num_slots = static_cast<uint16_t>(sym.refs.size());
     layout.capturable = sym.capturing;
+    layout.inits.reserve(sym.loads.size());
     for (const auto& [n, load] : sym.loads) {
       SlotInit init{load.kind, sym.slotOf(n), n, hashString(*n), {}};
       if (load.kind == SlotInitKind::Alias) {
@@ -474,8 +482,23 @@ class Analyzer {
     return layout;
   }
 
+  // The names that bodies may use without declaring them, interned when first needed.
+  struct SpecialNames {
+    std::array<Name, 3> of_macro = {};  // caller, kwargs, varargs
+    Name loop = nullptr;
+    Name super = nullptr;
+  };
+  const SpecialNames& specials() {
+    if (!specials_.loop) {
+      specials_ = {
+          {intern("caller"), intern("kwargs"), intern("varargs")}, intern("loop"), intern("super")};
+    }
+    return specials_;
+  }
+
   std::vector<std::unique_ptr<Symbols>> tables_;
   std::vector<DeferredMacro>* deferred_ = nullptr;
+  SpecialNames specials_;
 };
 
 }  // namespace

@@ -20,8 +20,17 @@ using Args = const CallArgs&;
 // Jinja's soft_str: strings unchanged (markup kept), anything else through str().
 Value softStr(const Value& v) { return v.isString() ? v : Value::string(str(v)); }
 
+// Whether lower-casing leaves `s` as it is: ASCII without capitals (most names and keys).
+bool isPlainLower(std::string_view s) {
+  return std::none_of(s.begin(), s.end(), [](char c) {
+    return static_cast<unsigned char>(c) >= 0x80 || (c >= 'A' && c <= 'Z');
+  });
+}
+
+// A string that lower-casing leaves unchanged is returned itself, as indent returns its input.
 Value lowerFilter(Exec&, const Value& in, Args args) {
   ArgBinder(args, "lower", {});
+  if (in.isString() && isPlainLower(in.s())) return in;
   return Value::string(unicode::toLower(softStr(in).s()), in.isMarkup());
 }
 
@@ -87,6 +96,7 @@ Value replaceFilter(Exec&, const Value& in, Args args) {
 void appendIndented(std::string& out, std::string_view input, std::string_view indention,
                     bool first, bool blank) {
   size_t start = out.size();
+  size_t limit = activeLimits().string_bytes;  // checked after each line, as checkSize would
   if (first) out += indention;
   LineCursor cursor(input, false);
   bool first_line = true;
@@ -97,7 +107,7 @@ void appendIndented(std::string& out, std::string_view input, std::string_view i
     }
     first_line = false;
     out += line;
-    checkSize(out.size() - start, "string");
+    if (out.size() - start > limit) checkSize(out.size() - start, "string");
   };
   for (std::string_view line; cursor.next(line);) add(line);
   if (cursor.endedWithBreak() && input.back() != '\r') add({});
@@ -146,15 +156,16 @@ IndentCall bindIndent(const Value& in, Args args) {
 }
 
 // Whether indent returns its input unchanged: one line, and no indention before it.
-bool indentKeepsInput(const std::string& input, const IndentCall& call) {
-  return !mayHaveLineBreak(input) && (!call.first || call.indention().empty());
+bool indentKeepsInput(bool one_line, const IndentCall& call) {
+  return one_line && (!call.first || call.indention().empty());
 }
 
-// indent's result appended to `out`, reserved first (`reserve` gets the size to add).
+// indent's result appended to `out`, reserved first (`reserve` gets the size to add);
+// `one_line`: the input has no line break.
 template <class Reserve>
-void appendIndentResult(std::string& out, const std::string& input, const IndentCall& call,
-                        Reserve reserve) {
-  if (!mayHaveLineBreak(input)) {  // one line: only `first` changes it
+void appendIndentResult(std::string& out, const std::string& input, bool one_line,
+                        const IndentCall& call, Reserve reserve) {
+  if (one_line) {  // only `first` changes it
     std::string_view prefix = call.first ? call.indention() : std::string_view();
     reserve(prefix.size() + input.size());
     out.append(prefix).append(input);
@@ -166,9 +177,10 @@ void appendIndentResult(std::string& out, const std::string& input, const Indent
 
 Value indentFilter(Exec&, const Value& in, Args args) {
   IndentCall call = bindIndent(in, args);
-  if (indentKeepsInput(in.s(), call)) return in;
+  bool one_line = !mayHaveLineBreak(in.s());
+  if (indentKeepsInput(one_line, call)) return in;
   std::string out;
-  appendIndentResult(out, in.s(), call, [&](size_t size) { out.reserve(size); });
+  appendIndentResult(out, in.s(), one_line, call, [&](size_t size) { out.reserve(size); });
   return Value::string(std::move(out), in.isMarkup());
 }
 
@@ -177,9 +189,10 @@ Value indentFilter(Exec&, const Value& in, Args args) {
 // value of indentFilter would have been.
 bool indentInto(Exec&, const Value& in, Args args, std::string& out) {
   IndentCall call = bindIndent(in, args);
-  bool keeps_input = indentKeepsInput(in.s(), call);
+  bool one_line = !mayHaveLineBreak(in.s());
+  bool keeps_input = indentKeepsInput(one_line, call);
   size_t start = out.size();
-  appendIndentResult(out, in.s(), call, [&](size_t size) { reserveToAppend(out, size); });
+  appendIndentResult(out, in.s(), one_line, call, [&](size_t size) { reserveToAppend(out, size); });
   if (!keeps_input) chargeWork(out.size() - start);
   return true;
 }

@@ -1,7 +1,9 @@
 // Tokens of the template language. A token is its kind and where it lies in the template's
 // normalised source: `pos`, the byte offset (also what error locations give), and `length`;
 // its text is read from that source (`textIn`), so a token is 12 bytes and the build's stored
-// tokens (token_table.h) become tokens without a view to make for each.
+// tokens (token_table.h) become tokens without a view to make for each. The build stores a
+// token as the three 32-bit words of this struct's layout (kind with zero padding, offset,
+// length), which the engine reads in place: hence `may_alias` (those words are `uint32_t`s).
 #pragma once
 
 #include <cstdint>
@@ -48,7 +50,7 @@ enum class Tok : uint8_t {
   Eof,
 };
 
-struct Token {
+struct [[gnu::may_alias]] Token {
   Tok kind;
   uint32_t pos;
   uint32_t length;

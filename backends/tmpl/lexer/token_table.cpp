@@ -1,43 +1,55 @@
-// Packing and checked unpacking of token streams (see token_table.h).
+// Packing and checked in-place reading of token streams (see token_table.h).
 #include "backends/tmpl/lexer/token_table.h"
+
+#include <bit>
+#include <cstddef>
 
 namespace smachac::tmpl {
 namespace {
 
-constexpr uint32_t kKindBits = 8;
-constexpr uint32_t kKindMask = (1u << kKindBits) - 1;
+constexpr size_t kWordsPerToken = 3;
+
+/// Whether the words of a token are the bytes of a `Token` on this machine.
+constexpr bool kLayoutFits = std::endian::native == std::endian::little &&
+                             sizeof(Token) == kWordsPerToken * sizeof(uint32_t) &&
+                             offsetof(Token, kind) == 0 && offsetof(Token, pos) == 4 &&
+                             offsetof(Token, length) == 8 && alignof(Token) <= alignof(uint32_t);
+
+/// Whether the words are tokens of `source`: known kinds (the padding after a kind's byte
+/// zero), each beginning where the one before ended or after it (the lexer's tokens never
+/// overlap), the last one the end of the template at its end, so that all lie in it.
+bool fits(std::span<const uint32_t> words, std::string_view source) {
+  uint64_t end = 0;  // of the token before
+  for (size_t i = 0; i < words.size(); i += kWordsPerToken) {
+    uint32_t kind = words[i], pos = words[i + 1], length = words[i + 2];
+    if (kind > static_cast<uint32_t>(Tok::Eof) || pos < end) return false;
+    end = uint64_t{pos} + length;
+  }
+  size_t last = words.size() - kWordsPerToken;
+  return words[last] == static_cast<uint32_t>(Tok::Eof) && words[last + 1] == source.size() &&
+         end == source.size();
+}
 
 }  // namespace
 
 std::vector<uint32_t> packTokens(const std::vector<Token>& tokens) {
   std::vector<uint32_t> words;
-  words.reserve(tokens.size() * 2);
+  words.reserve(tokens.size() * kWordsPerToken);
   for (const Token& token : tokens) {
-    words.push_back(static_cast<uint32_t>(token.kind) | token.length << kKindBits);
+    words.push_back(static_cast<uint32_t>(token.kind));
     words.push_back(token.pos);
+    words.push_back(token.length);
   }
   return words;
 }
 
-std::optional<std::vector<Token>> unpackTokens(std::span<const uint32_t> words,
-                                               std::string_view source) {
-  if (words.size() < 2 || words.size() % 2 != 0) return std::nullopt;
-  std::vector<Token> tokens(words.size() / 2);
-  uint32_t last_pos = 0;
-  for (size_t i = 0; i < tokens.size(); ++i) {
-    uint32_t kind = words[2 * i] & kKindMask;
-    uint32_t length = words[2 * i] >> kKindBits;
-    uint32_t pos = words[2 * i + 1];
-    if (kind > static_cast<uint32_t>(Tok::Eof) || pos < last_pos || pos > source.size() ||
-        length > source.size() - pos) {
-      return std::nullopt;
-    }
-    tokens[i] = Token{static_cast<Tok>(kind), pos, length};
-    last_pos = pos;
+std::optional<std::span<const Token>> storedTokens(std::span<const uint32_t> words,
+                                                   std::string_view source) {
+  if (!kLayoutFits || words.empty() || words.size() % kWordsPerToken != 0 || !fits(words, source)) {
+    return std::nullopt;
   }
-  const Token& end = tokens.back();
-  if (!end.is(Tok::Eof) || end.pos != source.size()) return std::nullopt;
-  return tokens;
+  return std::span<const Token>(reinterpret_cast<const Token*>(words.data()),
+                                words.size() / kWordsPerToken);
 }
 
 }  // namespace smachac::tmpl

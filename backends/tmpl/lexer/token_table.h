@@ -1,8 +1,10 @@
 // Token streams stored as data: the build lexes the built-in templates once and embeds their
-// tokens (tools/cmake/embed_gen.cpp), so that a compile does not lex them again. Two 32-bit
-// words a token: `kind | length << 8`, then its byte offset in the normalised source. Rules:
-// unpacking checks every token against the source it is given (kinds, bounds, order, the
-// closing end-of-template token); words that do not fit it are refused and the source is
+// tokens (tools/cmake/embed_gen.cpp), so that a compile does not lex them again. Three 32-bit
+// words a token, the layout of `Token` on a little-endian machine: the kind (its byte, then
+// zeros), the byte offset in the normalised source, the length. The engine reads the stored
+// words in place as tokens, without copying them. Rules: the words are checked against the
+// source they are given before use (kinds, bounds, order, the closing end-of-template token);
+// words that do not fit it, or a machine whose layout differs, are refused and the source is
 // lexed instead.
 #pragma once
 
@@ -16,11 +18,12 @@
 
 namespace smachac::tmpl {
 
-/// The words of `tokens` (of a source shorter than 4 GiB, tokens shorter than 16 MiB).
+/// The words of `tokens` (of a source shorter than 4 GiB).
 std::vector<uint32_t> packTokens(const std::vector<Token>& tokens);
 
-/// The tokens of `words` (positions in `source`); nullopt if they do not fit it.
-std::optional<std::vector<Token>> unpackTokens(std::span<const uint32_t> words,
-                                               std::string_view source);
+/// The tokens `words` hold (positions in `source`), viewed in place; nullopt if they do not
+/// fit it.
+std::optional<std::span<const Token>> storedTokens(std::span<const uint32_t> words,
+                                                   std::string_view source);
 
 }  // namespace smachac::tmpl

@@ -37,11 +37,21 @@ std::optional<size_t> Parser::deferrableBodyEnd(size_t first) const {
   int depth = 0;
   for (size_t i = first; i + 1 < tokens_.size(); ++i) {
     const Token& token = tokens_[i];
-    if (token.is(Tok::Pipe) || isName(token, "is")) {
-      if (!knownFilterOrTestAt(i)) return std::nullopt;
-      continue;
+    switch (token.kind) {
+      case Tok::Pipe:
+        if (!knownFilterOrTestAt(i)) return std::nullopt;
+        continue;
+      case Tok::Name:
+        if (token.length == 2 && isName(token, "is") && !knownFilterOrTestAt(i)) {
+          return std::nullopt;
+        }
+        continue;
+      case Tok::BlockBegin:
+        break;
+      default:
+        continue;
     }
-    if (!token.is(Tok::BlockBegin) || !tokens_[i + 1].is(Tok::Name)) continue;
+    if (!tokens_[i + 1].is(Tok::Name)) continue;
     std::string_view tag = textOf(tokens_[i + 1]);
     if (recordedTemplateWide(tag)) return std::nullopt;
     if (tag == "filter" && !knownFilterOrTestAt(i + 1)) return std::nullopt;

@@ -25,7 +25,7 @@ std::string joinQuoted(std::span<const std::string_view> names) {
 
 }  // namespace
 
-ParsedTemplate parseTemplate(std::string_view source, const std::vector<Token>& tokens,
+ParsedTemplate parseTemplate(std::string_view source, std::span<const Token> tokens,
                              const Registry& registry, Arena& arena, bool defer_macros) {
   return Parser(source, tokens, registry, arena, defer_macros).parse();
 }
@@ -48,19 +48,26 @@ bool Parser::skipName(std::string_view text) {
   return true;
 }
 
+// The errors are built out of line, so that the checks that pass (nearly all) do not pay for
+// the frame that building a message needs.
 const Token& Parser::expect(Tok kind) {
-  if (!current().is(kind)) {
-    failAt(current().pos,
-           "expected `" + std::string(describe(kind)) + "`, got " + shown(current()));
-  }
+  if (!current().is(kind)) [[unlikely]]
+    failExpected(describe(kind));
   return next();
 }
 
 const Token& Parser::expectName(std::string_view text) {
-  if (!isName(current(), text)) {
-    failAt(current().pos, "expected `" + std::string(text) + "`, got " + shown(current()));
-  }
+  if (!isName(current(), text)) [[unlikely]]
+    failExpected(text);
   return next();
+}
+
+void Parser::failExpected(std::string_view expected) const {
+  failAt(current().pos, "expected `" + std::string(expected) + "`, got " + shown(current()));
+}
+
+void Parser::failGot(const Token& token, std::string_view prefix) const {
+  failAt(token.pos, std::string(prefix) + shown(token));
 }
 
 void Parser::failAt(uint32_t pos, std::string message) const {
@@ -123,7 +130,8 @@ Body Parser::parseStatements(std::initializer_list<std::string_view> end_tokens,
 //            | set | with | call | filter | do
 Stmt* Parser::parseStatement() {
   const Token& token = current();
-  if (!token.is(Tok::Name)) failAt(token.pos, "expected a tag name, got " + shown(token));
+  if (!token.is(Tok::Name)) [[unlikely]]
+    failGot(token, "expected a tag name, got ");
   NestingGuard guard(*this, token.pos);
   tag_stack_.push_back({textOf(token), token.pos});
   Stmt* stmt = nullptr;

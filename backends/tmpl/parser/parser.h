@@ -64,12 +64,12 @@ enum class FilterStart { AtPipe, AtName };
 
 /// Parses `tokens` (of `source`); raises SyntaxFault. With `defer_macros`, the top-level
 /// macros that can wait are left unparsed (ParsedTemplate::deferred).
-ParsedTemplate parseTemplate(std::string_view source, const std::vector<Token>& tokens,
+ParsedTemplate parseTemplate(std::string_view source, std::span<const Token> tokens,
                              const Registry& registry, Arena& arena, bool defer_macros = false);
 
 class Parser {
  public:
-  Parser(std::string_view source, const std::vector<Token>& tokens, const Registry& registry,
+  Parser(std::string_view source, std::span<const Token> tokens, const Registry& registry,
          Arena& arena, bool defer_macros = false)
       : source_(source),
         tokens_(tokens),
@@ -101,6 +101,11 @@ class Parser {
   const Token& expect(Tok kind);
   const Token& expectName(std::string_view name);
   [[noreturn]] void failAt(uint32_t pos, std::string message) const;
+  /// Raises "expected `expected`, got ..." at the current token.
+  [[noreturn, gnu::cold, gnu::noinline]] void failExpected(std::string_view expected) const;
+  /// Raises `prefix` followed by how `token` is shown ("unexpected `)`"), at the token.
+  [[noreturn, gnu::cold, gnu::noinline]] void failGot(const Token& token,
+                                                      std::string_view prefix) const;
   [[noreturn]] void failUnexpected(const Token& token, std::string_view expected) const;
   std::string shown(const Token& token) const;
   const std::string* name(std::string_view text) const { return intern(text); }
@@ -169,7 +174,7 @@ class Parser {
   };
 
   std::string_view source_;
-  const std::vector<Token>& tokens_;
+  std::span<const Token> tokens_;
   const Registry& registry_;
   Arena& arena_;
   bool defer_macros_;
@@ -195,6 +200,8 @@ class NestingGuard {
   NestingGuard& operator=(const NestingGuard&) = delete;
 
  private:
+  [[noreturn, gnu::cold, gnu::noinline]] void failTooDeep(uint32_t pos) const;
+
   Parser& parser_;
 };
 

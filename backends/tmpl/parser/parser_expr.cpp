@@ -30,10 +30,15 @@ bool isCompareToken(Tok kind, CmpOp& op) {
 }  // namespace
 
 NestingGuard::NestingGuard(Parser& parser, uint32_t pos) : parser_(parser) {
-  if (++parser_.nesting_ > kMaxNesting) {
+  if (++parser_.nesting_ > kMaxNesting) [[unlikely]] {
     --parser_.nesting_;
-    parser_.failAt(pos, "template nested too deeply (limit " + std::to_string(kMaxNesting) + ")");
+    failTooDeep(pos);
   }
+}
+
+// Out of line, so that the guards that pass do not pay for building the message.
+void NestingGuard::failTooDeep(uint32_t pos) const {
+  parser_.failAt(pos, "template nested too deeply (limit " + std::to_string(kMaxNesting) + ")");
 }
 
 // expression := cond_expr | or_expr   (see with_cond_expr)
@@ -239,7 +244,7 @@ Expr* Parser::parsePrimary() {
     case Tok::LBrace:
       return parseDict();
     default:
-      failAt(token.pos, "unexpected " + shown(token));
+      failGot(token, "unexpected ");
   }
 }
 
@@ -311,7 +316,7 @@ Expr* Parser::parseTuple(const TupleOptions& options) {
       items.push_back(item());
     }
   } else if (!options.explicit_parens) {
-    failAt(current().pos, "expected an expression, got " + shown(current()));
+    failGot(current(), "expected an expression, got ");
   }
   auto* tuple = arena_.make<SeqExpr>(ExprKind::Tuple, pos);
   tuple->items = std::move(items);

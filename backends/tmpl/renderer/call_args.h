@@ -3,6 +3,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <new>
 #include <span>
 #include <string>
 #include <string_view>
@@ -22,27 +23,48 @@ struct CallArgs {
 };
 
 /// A vector that keeps its first N elements inline (no allocation for short argument lists).
-/// (clang-tidy 14 reports `__i0`, the loop variable of an implicit array initialisation it
-/// makes up for `inline_`, as a name in the wrong style.)
+/// The inline room is raw storage: only the elements added are constructed and destroyed
+/// (every call's arguments, every render's Exec makes some).
 template <class T, size_t N>
-class SmallVector {  // NOLINT(readability-identifier-naming)
+class SmallVector {
  public:
+  SmallVector() = default;
+  SmallVector(const SmallVector& other) { append(other); }
+  SmallVector(SmallVector&& other) noexcept { take(std::move(other)); }
+  SmallVector& operator=(const SmallVector& other) {
+    if (this != &other) {
+      clear();
+      append(other);
+    }
+    return *this;
+  }
+  SmallVector& operator=(SmallVector&& other) noexcept {
+    if (this != &other) {
+      clear();
+      take(std::move(other));
+    }
+    return *this;
+  }
+  ~SmallVector() { destroyInline(); }
+
   template <class... Args>
   void emplaceBack(Args&&... args) {
     if (heap_.empty() && size_ < N) {
-      inline_[size_++] = T(std::forward<Args>(args)...);
+      new (inlineData() + size_) T(std::forward<Args>(args)...);
+      ++size_;
       return;
     }
-    if (heap_.empty()) {
-      heap_.reserve(N * 2);
-      for (size_t i = 0; i < size_; ++i) heap_.push_back(std::move(inline_[i]));
-    }
+    if (heap_.empty()) spill();
     heap_.emplace_back(std::forward<Args>(args)...);
   }
   void pushBack(T value) { emplaceBack(std::move(value)); }
   void reserve(size_t) {}
-  const T* data() const { return heap_.empty() ? inline_ : heap_.data(); }
-  T* data() { return heap_.empty() ? inline_ : heap_.data(); }
+  void clear() {
+    destroyInline();
+    heap_.clear();
+  }
+  const T* data() const { return heap_.empty() ? inlineData() : heap_.data(); }
+  T* data() { return heap_.empty() ? inlineData() : heap_.data(); }
   size_t size() const { return heap_.empty() ? size_ : heap_.size(); }
   const T* begin() const { return data(); }
   const T* end() const { return data() + size(); }
@@ -53,8 +75,37 @@ class SmallVector {  // NOLINT(readability-identifier-naming)
   operator std::span<const T>() const { return {data(), size()}; }  // NOLINT
 
  private:
-  T inline_[N];
-  size_t size_ = 0;
+  T* inlineData() { return std::launder(reinterpret_cast<T*>(storage_)); }
+  const T* inlineData() const { return std::launder(reinterpret_cast<const T*>(storage_)); }
+  void destroyInline() {
+    for (size_t i = 0; i < size_; ++i) inlineData()[i].~T();
+    size_ = 0;
+  }
+  // Moves the inline elements to the heap (which then holds every element).
+  void spill() {
+    heap_.reserve(N * 2);
+    for (size_t i = 0; i < size_; ++i) heap_.push_back(std::move(inlineData()[i]));
+    destroyInline();
+  }
+  void append(const SmallVector& other) {
+    for (const T& item : other) emplaceBack(item);
+  }
+  // The elements of `other`, into an empty vector: its heap taken whole, or its inline
+  // elements moved (they fit), so nothing is allocated.
+  void take(SmallVector&& other) noexcept {
+    if (!other.heap_.empty()) {
+      heap_ = std::move(other.heap_);
+      other.heap_.clear();
+      return;
+    }
+    for (size_t i = 0; i < other.size_; ++i)
+      new (inlineData() + i) T(std::move(other.inlineData()[i]));
+    size_ = other.size_;
+    other.destroyInline();
+  }
+
+  alignas(T) unsigned char storage_[N * sizeof(T)];
+  size_t size_ = 0;  // constructed inline elements (0 once spilled)
   std::vector<T> heap_;
 };
 
@@ -84,8 +135,16 @@ class ArgBinder {
 
  private:
   static constexpr size_t kMaxParams = 8;
+  // A parameter's name: a view of a string literal, stored without a constructor so that only
+  // the `count_` names given are written (a filter call makes a binder).
+  struct ParamName {
+    const char* data;
+    size_t size;
+    std::string_view view() const { return {data, size}; }
+  };
+  [[noreturn]] void failKeyword(const std::string& name, bool duplicate) const;
   std::string_view function_;
-  std::string_view params_[kMaxParams];  // views of string literals
+  ParamName params_[kMaxParams];
   size_t count_ = 0;
   const Value* bound_[kMaxParams] = {};
 };

@@ -141,18 +141,25 @@ class Feed {
   Ref<Frame> test_frame_;
 };
 
+// Jinja2's LoopContext over a Feed, or over the pairs of a sorted-items loop, which it reads
+// by index: `last`, `length`, `previtem` and `nextitem` of a pair need no tuple made for each
+// item (the tuples `previtem`/`nextitem` return are made once per pair, when first asked for).
 class LoopObject final : public Object {
  public:
   explicit LoopObject(Feed* feed) : feed_(feed) {}
+  explicit LoopObject(const std::vector<DictObject::Entry>* pairs) : pairs_(pairs) {}
 
   void advance(const Value& item) {
     ++index0_;
     previous_ = current_;
     current_ = item;
   }
+  void advancePair() { ++index0_; }
   void finish() {
     length_ = index0_ + 1;
+    if (pairs_ && index0_ > 0) keepPreviousPair();
     feed_ = nullptr;
+    pairs_ = nullptr;
   }
 
   std::string_view typeName() const override { return "LoopContext"; }
@@ -175,25 +182,65 @@ class LoopObject final : public Object {
 
  private:
   int64_t length() const {
+    if (length_ < 0 && pairs_) length_ = static_cast<int64_t>(pairs_->size());
     if (length_ < 0 && feed_) length_ = index0_ + 1 + static_cast<int64_t>(feed_->remaining());
     return length_ < 0 ? index0_ + 1 : length_;
   }
   bool hasNext(Value* out) const {
+    if (pairs_) {
+      auto next = static_cast<size_t>(index0_ + 1);
+      if (next >= pairs_->size()) return false;
+      if (out) *out = pairAt(next);
+      return true;
+    }
     if (!feed_) return false;
     if (!out) return feed_->hasMore();
-    Value v;
-    if (!feed_->peek(v)) return false;
-    if (out) *out = v;
-    return true;
+    return feed_->peek(*out);
+  }
+  Value previousItem() const {
+    if (pairs_) return index0_ > 0 ? pairAt(static_cast<size_t>(index0_ - 1)) : Value();
+    if (!previous_pair_.first.isUndefined()) {  // a pair loop that ended: its tuple, once
+      previous_ = Value::newTuple({previous_pair_.first, previous_pair_.second});
+      previous_pair_ = {};
+    }
+    return previous_;
+  }
+  // What `previtem` needs once the loop has ended (the object may outlive it): the tuple of
+  // the previous pair if it was made, else the pair, made a tuple only if asked for.
+  void keepPreviousPair() {
+    auto i = static_cast<size_t>(index0_ - 1);
+    if (i < pair_tuples_.size() && !pair_tuples_[i].isUndefined()) {
+      previous_ = pair_tuples_[i];
+    } else {
+      previous_pair_ = (*pairs_)[i];
+    }
+  }
+  // The tuple of pair `i`, the same object each time it is asked for.
+  const Value& pairAt(size_t i) const {
+    if (pair_tuples_.empty()) pair_tuples_.resize(pairs_->size());
+    Value& tuple = pair_tuples_[i];
+    if (tuple.isUndefined()) tuple = Value::newTuple({(*pairs_)[i].first, (*pairs_)[i].second});
+    return tuple;
   }
 
-  Feed* feed_;
+  Feed* feed_ = nullptr;
+  const std::vector<DictObject::Entry>* pairs_ = nullptr;
+  mutable std::vector<Value> pair_tuples_;
   int64_t index0_ = -1;
   mutable int64_t length_ = -1;
   Value current_;
-  Value previous_;  // unset until the second item (as before: the first item has none)
+  mutable Value previous_;  // unset until the second item (as before: the first has none)
+  mutable DictObject::Entry previous_pair_;  // see keepPreviousPair
   bool has_changed_ = false;
   Value last_changed_;
+};
+
+// Ends the loop object's view of its items when the loop ends (it may outlive the loop).
+struct LoopFinisher {
+  LoopObject* loop;
+  ~LoopFinisher() {
+    if (loop) loop->finish();
+  }
 };
 
 class LoopMethod final : public Object {
@@ -231,7 +278,7 @@ bool LoopObject::getAttr(std::string_view name, Value& out) const {
   else if (name == "depth0")
     out = Value::integer(0);
   else if (name == "previtem")
-    out = previous_;
+    out = previousItem();
   else if (name == "nextitem") {
     if (!hasNext(&out)) out = Value::undefinedHint("there is no next item");
   } else if (name == "cycle" || name == "changed") {
@@ -292,12 +339,7 @@ void runLoop(Exec& ex, Site& site, const ForStmt& node, Value iterable) {
   Feed feed(ex, site, node, iterable);
   FrameHolder frame(ex, site.frame, &site.frame->context(), node.loop_frame);
   Ref<LoopObject> loop = node.loop_slot >= 0 ? new LoopObject(&feed) : nullptr;
-  struct Finisher {
-    LoopObject* loop;
-    ~Finisher() {
-      if (loop) loop->finish();
-    }
-  } finisher{loop.get()};
+  LoopFinisher finisher{loop.get()};
   Site inner = site.inner(frame.get());
   bool iterated = false;
   Value item;
@@ -315,9 +357,31 @@ void runLoop(Exec& ex, Site& site, const ForStmt& node, Value iterable) {
   if (!iterated && !node.orelse.empty()) execElse(ex, site, node);
 }
 
-// A sorted-items loop over a dict (false for anything else: the loop runs as written). The
-// pairs are bound to the two names without tuples unless the body uses `loop`, whose
-// previtem and nextitem are tuples.
+// The body of a sorted-items loop for each pair, bound to the two names without a tuple.
+void runPairs(Exec& ex, Site& site, const ForStmt& node,
+              const std::vector<DictObject::Entry>& pairs) {
+  const auto& names = static_cast<const SeqExpr*>(node.target)->items;
+  SlotRef key = static_cast<const NameExpr*>(names[0])->ref;
+  SlotRef value = static_cast<const NameExpr*>(names[1])->ref;
+  FrameHolder frame(ex, site.frame, &site.frame->context(), node.loop_frame);
+  Ref<LoopObject> loop = node.loop_slot >= 0 ? new LoopObject(&pairs) : nullptr;
+  LoopFinisher finisher{loop.get()};
+  Site inner = site.inner(frame.get());
+  for (const auto& [k, v] : pairs) {
+    ex.step();
+    initFrame(*frame, node.loop_frame, ex.registry);
+    frame->slot(key) = k;
+    frame->slot(value) = v;
+    if (loop) {
+      loop->advancePair();
+      frame->local(static_cast<uint16_t>(node.loop_slot)) = Value::object(loop.get());
+    }
+    execBody(ex, inner, node.body);
+  }
+  if (pairs.empty() && !node.orelse.empty()) execElse(ex, site, node);
+}
+
+// A sorted-items loop over a dict (false for anything else: the loop runs as written).
 bool runSortedItems(Exec& ex, Site& site, const ForStmt& node) {
   if (node.sorted_items < 0) node.sorted_items = isSortedItemsLoop(node) ? 1 : 0;
   if (node.sorted_items == 0) return false;
@@ -325,28 +389,9 @@ bool runSortedItems(Exec& ex, Site& site, const ForStmt& node) {
   const Expr* object = static_cast<const GetattrExpr*>(call->callee)->object;
   const Value& self = site.frame->slot(static_cast<const NameExpr*>(object)->ref);
   if (!self.isDict()) return false;
-  std::vector<DictObject::Entry> entries = sortedEntries(ex, node, self);
-  if (node.loop_slot >= 0) {
-    std::vector<Value> tuples;
-    tuples.reserve(entries.size());
-    for (auto& [k, v] : entries) tuples.push_back(Value::newTuple({std::move(k), std::move(v)}));
-    runLoop(ex, site, node, Value::newList(std::move(tuples)));
-    return true;
-  }
-  chargeWork(entries.size() * sizeof(Value));  // the sorted list
-  const auto& names = static_cast<const SeqExpr*>(node.target)->items;
-  SlotRef key = static_cast<const NameExpr*>(names[0])->ref;
-  SlotRef value = static_cast<const NameExpr*>(names[1])->ref;
-  FrameHolder frame(ex, site.frame, &site.frame->context(), node.loop_frame);
-  Site inner = site.inner(frame.get());
-  for (const auto& [k, v] : entries) {
-    ex.step();
-    initFrame(*frame, node.loop_frame, ex.registry);
-    frame->slot(key) = k;
-    frame->slot(value) = v;
-    execBody(ex, inner, node.body);
-  }
-  if (entries.empty() && !node.orelse.empty()) execElse(ex, site, node);
+  std::vector<DictObject::Entry> pairs = sortedEntries(ex, node, self);
+  chargeWork(pairs.size() * sizeof(Value));  // the sorted list
+  runPairs(ex, site, node, pairs);
   return true;
 }
 

@@ -28,7 +28,7 @@ class Recorder {
   bool record(const Template& owner, Stmt* stmt, const Template*& parent) {
     switch (stmt->kind) {
       case StmtKind::Text:
-        if (!parent) add({PrologueStep::Text, &owner, nullptr, stmt, {stmt}, {}});
+        if (!parent) addText(owner, stmt);
         return true;
       case StmtKind::Print:
         return parent != nullptr;  // suppressed: not even evaluated
@@ -43,7 +43,7 @@ class Recorder {
         if (parent && block.toplevel) return true;  // after extends the parent places blocks
         if (block.scoped || !block.toplevel) return false;
         flushImports();
-        add({PrologueStep::BlockCall, &owner, nullptr, stmt, {}, {}});
+        add({PrologueStep::BlockCall, &owner, nullptr, stmt, {}, {}, {}});
         return true;
       }
       default:
@@ -52,16 +52,28 @@ class Recorder {
   }
 
   void add(PrologueAction action) { out_.actions.push_back(std::move(action)); }
+  /// A root text; one that follows another text of the same root (the imports between them
+  /// move to the next block call) joins it, and the replay writes the run at once.
+  void addText(const Template& owner, Stmt* stmt) {
+    std::string_view text = static_cast<const TextStmt&>(*stmt).text;
+    if (out_.actions.empty() || out_.actions.back().step != PrologueStep::Text ||
+        out_.actions.back().owner != &owner) {
+      add({PrologueStep::Text, &owner, nullptr, stmt, {stmt}, {}, std::string(text)});
+      return;
+    }
+    out_.actions.back().body.push_back(stmt);
+    out_.actions.back().text += text;
+  }
   /// A root starts: its frame has no names yet.
   void enterRoot(const Template* owner, const Template& tmpl, const Stmt* via) {
     root_locals_.clear();
-    add({PrologueStep::EnterRoot, owner, &tmpl, via, {}, {}});
+    add({PrologueStep::EnterRoot, owner, &tmpl, via, {}, {}, {}});
   }
 
   /// The imports recorded since the last block call (before it, or at the end).
   void flushImports() {
     if (imports_.vars.empty()) return;
-    add({PrologueStep::Imports, nullptr, nullptr, nullptr, {}, std::move(imports_)});
+    add({PrologueStep::Imports, nullptr, nullptr, nullptr, {}, std::move(imports_), {}});
     imports_ = SharedVars();
   }
 
@@ -111,11 +123,11 @@ class Recorder {
     const Template& included = loadTemplate(ex_, *name);
     const Body& body = rootBody(ex_, included);
     if (body.size() <= 1 && (body.empty() || body.front()->kind == StmtKind::Text)) {
-      add({PrologueStep::IncludeText, &owner, &included, &s, body, {}});
+      add({PrologueStep::IncludeText, &owner, &included, &s, body, {}, {}});
       return true;
     }
     // The locals the include passes: each must be a name this root imported before it.
-    PrologueAction action{PrologueStep::Include, &owner, &included, &s, {}, {}};
+    PrologueAction action{PrologueStep::Include, &owner, &included, &s, {}, {}, {}};
     for (const LocalRef& local : s.locals) {
       const Value* value = rootLocal(local.name);
       if (!value) return false;
@@ -137,7 +149,7 @@ class Recorder {
     const Value* name = constantName(s.template_name);
     if (!name || parent) return false;
     parent = &loadTemplate(ex_, *name);
-    add({PrologueStep::Blocks, &owner, parent, &s, {}, {}});
+    add({PrologueStep::Blocks, &owner, parent, &s, {}, {}, {}});
     return true;
   }
 
@@ -174,12 +186,11 @@ void callBlock(Exec& ex, const PrologueAction& action, Context& ctx, std::string
   }
 }
 
-// A root's text; one that would exceed the output limit runs as a statement, which reports it
-// where the normal run does.
+// A root's text (or a run of them); one that would exceed the output limit runs as statements,
+// which report it where the normal run does.
 void writeText(Exec& ex, const PrologueAction& action, Site& site, size_t limit) {
-  std::string_view text = static_cast<const TextStmt&>(*action.body.front()).text;
-  if (site.out->size() + text.size() <= limit) {
-    site.out->append(text);
+  if (site.out->size() + action.text.size() <= limit) {
+    site.out->append(action.text);
     return;
   }
   execBody(ex, site, action.body);

@@ -26,7 +26,7 @@ namespace smachac::tmpl {
 
 enum class PrologueStep : uint8_t {
   EnterRoot,    // `tmpl`'s root starts (its call guard), after the extends `stmt` of `owner`
-  Text,         // `body` (one text of `owner`'s root) written
+  Text,         // `text` written: `body`, texts of `owner`'s root that follow one another
   IncludeText,  // the include `stmt` of a root that is `body` (one text of `tmpl`)
   Include,      // the include `stmt` of `tmpl`, run in a derived context with `shared` as locals
   Imports,      // `shared` bound in the context (the imports up to the next block call)
@@ -41,6 +41,7 @@ struct PrologueAction {
   const Stmt* stmt = nullptr;
   Body body;
   SharedVars shared;
+  std::string text;  // Text: the texts of `body` joined
 };
 
 /// The recorded run of one template's root (and its parents' roots) under one skip policy.

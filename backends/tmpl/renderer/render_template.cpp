@@ -77,22 +77,28 @@ void renderRoot(Exec& ex, const Template& tmpl, Context& ctx, std::string& out) 
   }
 }
 
+namespace {
+
+// `super` in block `index` of `ctx`: the next block of the same name, or an undefined value
+// that says there is none.
+Value superOf(Context& ctx, size_t index) {
+  const std::string* name = ctx.blocks()[index].name;
+  for (size_t i = index + 1; i < ctx.blocks().size(); ++i) {
+    if (ctx.blocks()[i].name == name) return Value::object(new BlockRefObject(&ctx, i));
+  }
+  return Value::undefinedHint("there is no parent block called `" + *name + "`");
+}
+
+}  // namespace
+
 void renderBlockAt(Exec& ex, Context& ctx, size_t index, std::string& out) {
   BlockEntry entry = ctx.blocks()[index];
   CallGuard guard(ex, entry.tmpl);
   const BlockStmt& block = *entry.block;
   FrameHolder frame(ex, nullptr, &ctx, block.frame);
   initFrame(*frame, block.frame, ex.registry);
-  if (block.super_slot >= 0) {
-    Value super = Value::undefinedHint("there is no parent block called `" + *block.name + "`");
-    for (size_t i = index + 1; i < ctx.blocks().size(); ++i) {
-      if (ctx.blocks()[i].name == block.name) {
-        super = Value::object(new BlockRefObject(&ctx, i));
-        break;
-      }
-    }
-    frame->local(static_cast<uint16_t>(block.super_slot)) = super;
-  }
+  if (block.super_slot >= 0)
+    frame->local(static_cast<uint16_t>(block.super_slot)) = superOf(ctx, index);
   Site site{frame.get(), &out, nullptr, false, false};
   execBody(ex, site, block.body);
 }

@@ -51,8 +51,8 @@ TEST_CASE("every built-in template carries the tokens the lexer makes of it") {
     CAPTURE(file.path);
     std::string source = smachac::tmpl::normalizeSource(file.content);
     std::vector<smachac::tmpl::Token> lexed = smachac::tmpl::tokenize(source);
-    std::optional<std::vector<smachac::tmpl::Token>> stored =
-        smachac::tmpl::unpackTokens(file.tokens, source);
+    std::optional<std::span<const smachac::tmpl::Token>> stored =
+        smachac::tmpl::storedTokens(file.tokens, source);
     REQUIRE(stored);
     REQUIRE(stored->size() == lexed.size());
     for (size_t i = 0; i < lexed.size(); ++i) {

@@ -19,8 +19,12 @@ root=$(pwd)
 # Sources of the tree only (not what BUILD generates); clang-tidy parses with clang, which does
 # not know some of GCC's warning flags in the compile database, hence -Wno-unknown-warning-option.
 tree="^${root}/(backends|bench|checker|editors|frontend|ir|lsp|passes|refactor|sim|stdlib|templates|tests|tools)/"
+# ... and the unity sources CMake makes of tree files compiled as one unit (the files they
+# include are checked through them, as headers are).
+unity="^${build}/.*/Unity/unity_.*\.cxx$"
 if ! run-clang-tidy -clang-tidy-binary clang-tidy -p "$build" -j 2 -quiet \
-    -header-filter "${tree}|/include_roots/" -extra-arg=-Wno-unknown-warning-option "$tree" \
+    -header-filter "${tree}|/include_roots/" -extra-arg=-Wno-unknown-warning-option \
+    "${tree}|${unity}" \
     > "$build/clang-tidy.log" 2>&1; then
   sed "s/\x1b\[[0-9;]*m//g" "$build/clang-tidy.log" | grep -E "error:|warning:" | sort -u >&2
   echo "lint: names not in the house style (.clang-tidy); whole log: $build/clang-tidy.log" >&2

@@ -13,7 +13,7 @@ STARTUP_REPEATS = 4 * REPEATS
 
 # Cold compile of SMACHA's test scripts: runs per script (SMACHA takes 0.2-1 s a script, and
 # there are 49 of them).
-CORPUS_REPEATS = 3
+CORPUS_REPEATS = 5
 
 # In-process compile of the generated flat script (bench/passes_bench.cpp's `flat` shape).
 SCALE_SIZES = (1000, 10000, 100000)

@@ -38,22 +38,24 @@ def run(argv, env=None, stdout=None, keep_stdout=False, timeout=600):
     """Runs argv to its end and returns its Sample; raises Failed on a non-zero exit or when
     it runs longer than timeout seconds (it is killed). stdout: a path to write the standard
     output to (else it is discarded, or kept in the Sample with keep_stdout). The wall time
-    includes starting the process from Python (about 0.5 ms: see /bin/true's row)."""
+    includes starting the process from Python (about 0.5 ms: see /bin/true's row), but not
+    the start of the thread that watches for the timeout, which waits before the clock starts."""
     argv = [str(a) for a in argv]
     with tempfile.TemporaryFile() as err, tempfile.TemporaryFile() as kept:
         out = open(stdout, "wb") if stdout else (kept if keep_stdout else subprocess.DEVNULL)
+        watchdog = _Watchdog(timeout)
         try:
             start = time.perf_counter()
             proc = subprocess.Popen(argv, stdout=out, stderr=err, env=env)
-            timer = threading.Timer(timeout, _kill, (proc.pid,))
-            timer.start()
+            watchdog.watch(proc.pid)
             try:
                 _, status, usage = os.wait4(proc.pid, 0)  # blocks; keeps the child's rusage
             finally:
-                timer.cancel()
+                watchdog.stop()
             wall = time.perf_counter() - start
             proc.returncode = os.waitstatus_to_exitcode(status)
         finally:
+            watchdog.stop()
             if stdout:
                 out.close()
         kept.seek(0)
@@ -66,11 +68,28 @@ def run(argv, env=None, stdout=None, keep_stdout=False, timeout=600):
     return Sample(wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0, text)
 
 
-def _kill(pid):
-    try:
-        os.kill(pid, signal.SIGKILL)
-    except ProcessLookupError:
-        pass
+class _Watchdog:
+    """A thread, started before the measured run, that kills the watched process if it has
+    not ended `timeout` seconds after watch() (or after the watchdog started, if earlier)."""
+
+    def __init__(self, timeout):
+        self._pid = None
+        self._done = threading.Event()
+        self._thread = threading.Thread(target=self._wait, args=(timeout,), daemon=True)
+        self._thread.start()
+
+    def watch(self, pid):
+        self._pid = pid
+
+    def stop(self):
+        self._done.set()
+
+    def _wait(self, timeout):
+        if not self._done.wait(timeout) and self._pid is not None:
+            try:
+                os.kill(self._pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
 
 
 def median(values):

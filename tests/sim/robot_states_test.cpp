@@ -3,7 +3,6 @@
 // and the scene report.
 #include <doctest/doctest.h>
 
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <thread>
@@ -103,10 +102,15 @@ TEST_SUITE("sim_robot_states") {
         *robot, MoveToJointPositionsArgs{.limb = "left",
                                          .positions = joints(sim::tuckPose(sim::Side::Left))}));
     double requested = 0.0;  // simulated time just after the request
+    // The preempter steps the world in lockstep with the move (as a robot state does), so the
+    // request comes at 0.5 s of simulated time however the OS schedules the two threads: the
+    // move cannot step on until the preempter has asked and stopped taking part.
+    robot->beginExecution();
     std::thread preempter([&] {
-      while (robot->world().time() < 0.5) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      robot->stepUntil([&] { return robot->world().time() >= 0.5; }, 10.0);
       sm->requestPreempt();
       requested = robot->world().time();
+      robot->endExecution();
     });
     CHECK(outcomeOf(*sm) == "preempted");
     preempter.join();

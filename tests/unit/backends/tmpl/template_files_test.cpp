@@ -23,7 +23,8 @@ struct TempDir {
   fs::path path;
   TempDir() {
     std::string pattern = (fs::temp_directory_path() / "smachac_listing_XXXXXX").string();
-    path = ::mkdtemp(pattern.data());
+    REQUIRE(::mkdtemp(pattern.data()) != nullptr);  // pattern now names the new directory
+    path = pattern;
   }
   ~TempDir() { fs::remove_all(path); }
   void add(const std::string& name) const { std::ofstream(path / name) << "x"; }

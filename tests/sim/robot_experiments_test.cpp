@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <future>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -63,6 +65,25 @@ class SimTimeSink : public rt::TraceSink {
   const sim::World& world_;
   std::mutex mutex_;
   std::map<std::string, std::pair<double, double>> intervals_;
+};
+
+// Calls `action` when the state at `path` is entered, on the machine's thread.
+class EnterHook : public rt::TraceSink {
+ public:
+  EnterHook(std::string path, std::function<void()> action)
+      : path_(std::move(path)), action_(std::move(action)) {}
+  void write(const rt::TraceEvent& event) override {
+    if (event.kind != rt::TraceKind::Enter || event.state != path_) return;
+    fired_ = true;
+    action_();
+  }
+  /// Whether the state was entered (read once the machine has returned).
+  bool fired() const { return fired_; }
+
+ private:
+  bool fired_ = false;
+  std::string path_;
+  std::function<void()> action_;
 };
 
 // Index of the first trace line equal to `line` (lines() is "enter X", "exit X outcome", ...).
@@ -174,16 +195,34 @@ TEST_SUITE("sim_robot_dual_arm") {
     auto robot = makeRobot();
     auto sm = buildDualArmStacking(*robot);
     auto trace = std::make_shared<rt::RecordingSink>();
-    sm->setTraceSink(trace);
-    double requested = 0.0;  // simulated time just after the request
-    std::thread preempter([&] {
-      while (robot->world().time() < 2.0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    // The preempter takes part in the lockstep from PICK_BLOCKS' entry (registered on the
+    // machine's thread, before the arms can step), so the request comes 0.5 s of simulated time
+    // into the picks however the OS schedules the threads.
+    std::promise<double> entered;  // the simulated time PICK_BLOCKS was entered
+    auto on_pick = std::make_shared<EnterHook>("PICK_BLOCKS", [&] {
+      robot->beginExecution();
+      entered.set_value(robot->world().time());
+    });
+    sm->setTraceSink(
+        std::make_shared<rt::TeeSink>(std::vector<std::shared_ptr<rt::TraceSink>>{trace, on_pick}));
+    double entry_time = 0.0, requested = 0.0;  // simulated times of the entry and the request
+    std::thread preempter([&, entry = entered.get_future()]() mutable {
+      entry_time = entry.get();
+      if (entry_time < 0) return;  // the machine ended without entering PICK_BLOCKS
+      robot->stepUntil([&] { return robot->world().time() >= entry_time + 0.5; }, 10.0);
       sm->requestPreempt();
       requested = robot->world().time();
+      robot->endExecution();
     });
-    const rt::RunResult result = runMachine(*sm);
+    const rt::RunResult result = rt::run(*sm);
+    if (!on_pick->fired()) entered.set_value(-1.0);
     preempter.join();
+    INFO(result.error);
+    REQUIRE(result.ok());
     CHECK(result.outcome == "preempted");
+    INFO("PICK_BLOCKS entered at " << entry_time << " s, preempted at " << requested << " s");
+    CHECK(requested >= entry_time + 0.5);
+    CHECK(requested < entry_time + 0.52);
     CHECK(robot->world().time() <= requested + 0.02);
     const auto lines = trace->lines();
     CHECK(lineIndex(lines, "exit PICK_BLOCKS preempted") < std::ssize(lines));

@@ -1,46 +1,69 @@
 // YAML file → ir::Value with locations, on yaml-cpp.
 #include "frontend/yaml_loader.h"
 
-#include <fmt/core.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
+#include <string>
 
 #include "frontend/yaml_events.h"
+#include "ir/support/file_text.h"
 #include "ir/support/utf8.h"
 
 namespace smachac::frontend {
 namespace {
 
-namespace fs = std::filesystem;
+/// Reports why `path` could not be opened: stat tells a missing file from one that is there
+/// but cannot be read.
+void reportUnopenable(const std::string& path, SourceLoc from, DiagnosticEmitter& diags) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) {
+    diags.emit<DiagKind::FileNotFound>(from, path, "no such file");
+  } else if (S_ISDIR(info.st_mode)) {
+    diags.emit<DiagKind::UnreadableFile>(from, path, "it is a directory");
+  } else if (!S_ISREG(info.st_mode)) {
+    diags.emit<DiagKind::UnreadableFile>(from, path, "it is not a regular file");
+  } else {
+    diags.emit<DiagKind::UnreadableFile>(from, path, "permission denied or unreadable");
+  }
+}
 
+/// The text of the open file `fd` when it is a regular file of at most kMaxScriptBytes.
+std::optional<std::string> readOpened(int fd, const std::string& path, SourceLoc from,
+                                      DiagnosticEmitter& diags) {
+  struct stat info {};
+  const char* problem = nullptr;
+  if (::fstat(fd, &info) != 0) {
+    problem = "permission denied or unreadable";
+  } else if (S_ISDIR(info.st_mode)) {
+    problem = "it is a directory";
+  } else if (!S_ISREG(info.st_mode)) {
+    problem = "it is not a regular file";
+  } else if (static_cast<uintmax_t>(info.st_size) > kMaxScriptBytes) {
+    diags.emit<DiagKind::FileTooLarge>(from, path, std::to_string(info.st_size), kMaxScriptBytes);
+    return std::nullopt;
+  }
+  std::optional<std::string> text;
+  if (!problem) text = readOpenFile(fd, static_cast<size_t>(info.st_size));
+  if (!text) {
+    diags.emit<DiagKind::UnreadableFile>(from, path,
+                                         problem ? problem : "permission denied or unreadable");
+  }
+  return text;
+}
+
+/// A script's text: one open and one fstat (never blocking on a FIFO); the reasons a file
+/// cannot be read are told apart as a stat would tell them.
 std::optional<std::string> readRegularFile(const std::string& path, SourceLoc from,
                                            DiagnosticEmitter& diags) {
-  std::error_code ec;
-  fs::file_status status = fs::status(path, ec);
-  if (ec || !fs::exists(status)) {
-    diags.emit<DiagKind::FileNotFound>(from, path, "no such file");
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) {
+    reportUnopenable(path, from, diags);
     return std::nullopt;
   }
-  if (!fs::is_regular_file(status)) {
-    diags.emit<DiagKind::UnreadableFile>(
-        from, path, fs::is_directory(status) ? "it is a directory" : "it is not a regular file");
-    return std::nullopt;
-  }
-  uintmax_t size = fs::file_size(path, ec);
-  if (!ec && size > kMaxScriptBytes) {
-    diags.emit<DiagKind::FileTooLarge>(from, path, std::to_string(size), kMaxScriptBytes);
-    return std::nullopt;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diags.emit<DiagKind::UnreadableFile>(from, path, "permission denied or unreadable");
-    return std::nullopt;
-  }
-  std::string text;
-  if (!ec) text.reserve(size);
-  char chunk[1 << 16];
-  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) text.append(chunk, in.gcount());
+  std::optional<std::string> text = readOpened(fd, path, from, diags);
+  ::close(fd);
   return text;
 }
 

@@ -10,11 +10,8 @@
 #include <cerrno>
 
 namespace smachac {
-namespace {
 
-/// The bytes left in `fd`, read until end of file (the size is a first guess: a file may
-/// change while it is read); nullopt on a read error.
-std::optional<std::string> readAll(int fd, size_t expected_size) {
+std::optional<std::string> readOpenFile(int fd, size_t expected_size) {
   std::string text(expected_size + 1, '\0');
   size_t length = 0;
   while (true) {
@@ -29,15 +26,13 @@ std::optional<std::string> readAll(int fd, size_t expected_size) {
   return text;
 }
 
-}  // namespace
-
 std::optional<std::string> readFileText(const std::string& path) {
   int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return std::nullopt;
   struct stat info;
   std::optional<std::string> text;
   if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode)) {
-    text = readAll(fd, static_cast<size_t>(info.st_size));
+    text = readOpenFile(fd, static_cast<size_t>(info.st_size));
   }
   ::close(fd);
   return text;

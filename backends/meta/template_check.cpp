@@ -100,7 +100,7 @@ class Checker {
     const std::optional<std::string>& file = resolve(name.text);
     if (!file) {
       if (reported_.emplace(name.loc.file, name.loc.line, name.loc.column).second) {
-        std::optional<std::string> match = generator::closestTemplate(name.text, path_);
+        const std::optional<std::string>& match = closestTemplate(name.text);
         diags_.emit<DiagKind::UnknownTemplate>(name.loc, name.text, generator::describePath(path_),
                                                didYouMean(match));
         diags_.fixIt(match);
@@ -120,6 +120,16 @@ class Checker {
     auto it = resolved_.find(script_name);
     if (it == resolved_.end()) {
       it = resolved_.emplace(script_name, loader_.resolveScriptName(script_name)).first;
+    }
+    return it->second;
+  }
+
+  /// The suggestion for an unknown name, looked for once per name (it compares the name with
+  /// every template's: thousands of states naming the same missing template took seconds).
+  const std::optional<std::string>& closestTemplate(const std::string& script_name) {
+    auto it = suggestions_.find(script_name);
+    if (it == suggestions_.end()) {
+      it = suggestions_.emplace(script_name, generator::closestTemplate(script_name, path_)).first;
     }
     return it->second;
   }
@@ -221,6 +231,7 @@ class Checker {
   DiagnosticEmitter& diags_;
   std::map<std::string, std::optional<TemplateMeta>> metas_;
   std::unordered_map<std::string, std::optional<std::string>> resolved_;
+  std::unordered_map<std::string, std::optional<std::string>> suggestions_;
   std::set<std::tuple<uint32_t, uint32_t, uint32_t>> reported_;
 };
 

@@ -1,51 +1,63 @@
 // SourceManager: file registry and line lookup for diagnostics.
 #include "ir/support/source_manager.h"
 
+#include <algorithm>
+#include <memory>
+
 #include "ir/support/check.h"
 
 namespace smachac {
 
 uint32_t SourceManager::addFile(std::string path, std::string content) {
-  files_.push_back({std::move(path), std::move(content)});
+  files_.emplace_back(std::move(path), std::move(content));
   return static_cast<uint32_t>(files_.size());
 }
 
-const std::string& SourceManager::path(uint32_t file) const {
-  SMACHAC_CHECK(file >= 1 && file <= files_.size(), "unknown file id");
-  return files_[file - 1].path;
+const SourceManager::File& SourceManager::file(uint32_t id) const {
+  SMACHAC_CHECK(id >= 1 && id <= files_.size(), "unknown file id");
+  return files_[id - 1];
 }
 
-std::string_view SourceManager::content(uint32_t file) const {
-  SMACHAC_CHECK(file >= 1 && file <= files_.size(), "unknown file id");
-  return files_[file - 1].content;
-}
-
-std::string_view SourceManager::lineText(uint32_t file, uint32_t line) const {
-  std::string_view text = content(file);
-  size_t start = 0;
-  for (uint32_t n = 1; n < line; ++n) {
-    size_t nl = text.find('\n', start);
-    if (nl == std::string_view::npos) return {};
-    start = nl + 1;
+const std::vector<size_t>& SourceManager::lineStarts(const File& file) {
+  if (const std::vector<size_t>* known = file.line_starts.load(std::memory_order_acquire)) {
+    return *known;
   }
-  size_t end = text.find('\n', start);
-  std::string_view result = text.substr(start, end == std::string_view::npos ? end : end - start);
+  auto starts = std::make_unique<std::vector<size_t>>(1, 0);
+  const std::string& text = file.content;
+  for (size_t nl = text.find('\n'); nl != std::string::npos; nl = text.find('\n', nl + 1)) {
+    starts->push_back(nl + 1);
+  }
+  const std::vector<size_t>* expected = nullptr;
+  if (file.line_starts.compare_exchange_strong(expected, starts.get(), std::memory_order_acq_rel)) {
+    return *starts.release();
+  }
+  return *expected;  // another thread published the same starts first
+}
+
+const std::string& SourceManager::path(uint32_t id) const { return file(id).path; }
+
+std::string_view SourceManager::content(uint32_t id) const { return file(id).content; }
+
+std::string_view SourceManager::lineText(uint32_t id, uint32_t line) const {
+  const File& f = file(id);
+  const std::vector<size_t>& starts = lineStarts(f);
+  line = std::max(line, 1u);
+  if (line > starts.size()) return {};
+  std::string_view text = f.content;
+  const size_t start = starts[line - 1];
+  const size_t end = line < starts.size() ? starts[line] - 1 : text.size();
+  std::string_view result = text.substr(start, end - start);
   if (!result.empty() && result.back() == '\r') result.remove_suffix(1);
   return result;
 }
 
-SourceLoc SourceManager::locOf(uint32_t file, size_t offset, uint32_t length) const {
-  std::string_view text = content(file);
-  if (offset > text.size()) offset = text.size();
-  uint32_t line = 1;
-  size_t line_start = 0;
-  for (size_t i = 0; i < offset; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      line_start = i + 1;
-    }
-  }
-  return {file, line, static_cast<uint32_t>(offset - line_start + 1), length};
+SourceLoc SourceManager::locOf(uint32_t id, size_t offset, uint32_t length) const {
+  const File& f = file(id);
+  offset = std::min(offset, f.content.size());
+  const std::vector<size_t>& starts = lineStarts(f);
+  const auto after = std::upper_bound(starts.begin(), starts.end(), offset);
+  const auto line = static_cast<uint32_t>(after - starts.begin());
+  return {id, line, static_cast<uint32_t>(offset - *(after - 1) + 1), length};
 }
 
 }  // namespace smachac

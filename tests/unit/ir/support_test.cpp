@@ -51,3 +51,25 @@ TEST_CASE("source lines and offsets") {
   CHECK(loc.line == 3);
   CHECK(loc.column == 1);
 }
+
+TEST_CASE("source lines at the edges: a line break's own offset, the end, empty lines") {
+  smachac::SourceManager sources;
+  uint32_t f = sources.addFile("b.yml", "ab\n\nc\n");
+  CHECK(sources.lineText(f, 0) == "ab");  // line 0 reads as line 1
+  CHECK(sources.lineText(f, 2).empty());
+  CHECK(sources.lineText(f, 3) == "c");
+  CHECK(sources.lineText(f, 4).empty());  // after the last line break
+  CHECK(sources.lineText(f, 5).empty());
+  const std::pair<size_t, std::pair<uint32_t, uint32_t>> expected[] = {
+      {0, {1, 1}}, {2, {1, 3}}, {3, {2, 1}}, {4, {3, 1}}, {5, {3, 2}}, {6, {4, 1}}, {99, {4, 1}}};
+  for (const auto& [offset, line_column] : expected) {
+    INFO("offset " << offset);
+    smachac::SourceLoc loc = sources.locOf(f, offset, 2);
+    CHECK(loc.line == line_column.first);
+    CHECK(loc.column == line_column.second);
+    CHECK(loc.length == 2);
+  }
+  uint32_t empty = sources.addFile("empty.yml", "");
+  CHECK(sources.lineText(empty, 1).empty());
+  CHECK(sources.locOf(empty, 0).line == 1);
+}

@@ -5,6 +5,7 @@
 #include "backends/meta/template_check.h"
 #include "backends/target_code_check.h"
 #include "frontend/lower.h"
+#include "ir/support/suggest.h"
 #include "passes/pipeline.h"
 
 namespace smachac::checker {
@@ -43,6 +44,7 @@ CheckedScript checkScript(const std::string& path, std::optional<std::string> te
                           DiagnosticEmitter& diags) {
   size_t first = diags.diagnostics().size();
   size_t errors_before = diags.errorCount();
+  SuggestionBudget suggestions;  // "did you mean" for as many names as 10 M comparisons allow
   CheckedScript checked;
   frontend::FrontendOptions frontend_options{options.script_dirs, &checked.include_sites,
                                              options.sub_script_alone, options.overlay,

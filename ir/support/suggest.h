@@ -9,6 +9,28 @@
 
 namespace smachac {
 
+/// While one lives on a thread, the searches of closeMatches there share its budget of name
+/// comparisons, and once it is spent they find nothing: a script with thousands of unknown
+/// names among thousands of states would otherwise compare them all pairwise (minutes at
+/// 100,000 states; clang limits its spelling corrections alike). A search is made whole or not
+/// at all, so the output stays deterministic. Nested budgets: the innermost counts.
+class SuggestionBudget {
+ public:
+  static constexpr size_t kDefaultComparisons = 10'000'000;
+  explicit SuggestionBudget(size_t comparisons = kDefaultComparisons);
+  ~SuggestionBudget();
+  SuggestionBudget(const SuggestionBudget&) = delete;
+  SuggestionBudget& operator=(const SuggestionBudget&) = delete;
+
+  /// Takes `comparisons` from the thread's budget; false (and nothing taken) when it has
+  /// fewer left. Always true on a thread without a budget.
+  static bool spend(size_t comparisons);
+
+ private:
+  size_t left_;
+  SuggestionBudget* outer_;
+};
+
 /// Edit distance (insert, delete, substitute, swap adjacent), byte-wise.
 size_t editDistance(std::string_view a, std::string_view b);
 
@@ -18,7 +40,8 @@ std::optional<std::string> closestMatch(std::string_view word,
                                         std::span<const std::string> candidates);
 
 /// Every candidate as close to `word` as closestMatch requires, closest first (ties in
-/// candidate order), at most `limit` of them.
+/// candidate order), at most `limit` of them; none when the thread's SuggestionBudget cannot
+/// pay for comparing `word` with every candidate.
 std::vector<std::string> closeMatches(std::string_view word,
                                       std::span<const std::string> candidates, size_t limit);
 

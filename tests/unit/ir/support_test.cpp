@@ -1,7 +1,11 @@
 // Suggestions, UTF-8 validation, source lines.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <random>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ir/support/source_manager.h"
@@ -17,6 +21,72 @@ TEST_CASE("did you mean") {
   CHECK(smachac::didYouMean("WHATEVER", names).empty());
   CHECK(smachac::didYouMean("OPEN", names).empty());
   CHECK(smachac::editDistance("kitten", "sitting") == 3);
+}
+
+namespace {
+
+/// The whole optimal-string-alignment table, as the bounded search must agree with.
+size_t fullTableDistance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min(
+          {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+}  // namespace
+
+TEST_CASE("suggestions agree with the whole distance table") {
+  std::mt19937 random(7);
+  auto word = [&] {
+    std::string text(1 + random() % 12, 'a');
+    for (char& c : text) c = static_cast<char>('a' + random() % 3);  // few letters: near misses
+    return text;
+  };
+  std::vector<std::string> candidates;
+  for (int i = 0; i < 300; ++i) candidates.push_back(word());
+  for (int round = 0; round < 300; ++round) {
+    const std::string query = word();
+    std::vector<std::pair<size_t, std::string>> expected;
+    for (const std::string& candidate : candidates) {
+      const size_t distance = fullTableDistance(query, candidate);
+      if (candidate != query && distance <= std::clamp<size_t>(query.size() / 3, 1, 3)) {
+        expected.emplace_back(distance, candidate);
+      }
+    }
+    std::stable_sort(expected.begin(), expected.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<std::string> expected_names;
+    for (const auto& [distance, name] : expected) expected_names.push_back(name);
+    INFO("query " << query);
+    CHECK(smachac::closeMatches(query, candidates, candidates.size()) == expected_names);
+    CHECK(smachac::editDistance(query, candidates[round]) ==
+          fullTableDistance(query, candidates[round]));
+  }
+}
+
+TEST_CASE("a suggestion budget pays for whole searches, then none") {
+  const std::vector<std::string> names = {"OPEN", "CLOSE", "MOVE"};
+  {
+    smachac::SuggestionBudget budget(5);
+    CHECK(smachac::closestMatch("OPNE", names) == "OPEN");  // 3 comparisons, 2 left
+    CHECK_FALSE(smachac::closestMatch("OPNE", names).has_value());
+    {
+      smachac::SuggestionBudget inner(3);
+      CHECK(smachac::closestMatch("CLOES", names) == "CLOSE");
+    }
+    CHECK(smachac::closestMatch("OPNE", std::span(names).first(2)) == "OPEN");  // the last 2
+    CHECK_FALSE(smachac::closestMatch("OPNE", std::span(names).first(1)).has_value());
+  }
+  CHECK(smachac::closestMatch("OPNE", names) == "OPEN");  // no budget: no limit
 }
 
 TEST_CASE("utf-8 validation") {

@@ -9,7 +9,6 @@
 #include "tools/smachac/small_object_heap.h"
 
 #ifndef SMACHAC_SANITIZED
-#include <pthread.h>
 #include <sys/mman.h>
 
 #include <cstdint>
@@ -35,8 +34,7 @@ struct FreeBlock {
 };
 
 struct SmallObjectHeap {
-  bool enabled;
-  pthread_t owner;
+  bool enabled;  // by some thread, which owns it
   char* region;  // mapped on the first small block
   std::size_t runs_used;
   uint8_t run_class[kRuns];
@@ -46,18 +44,17 @@ struct SmallObjectHeap {
 };
 
 SmallObjectHeap g_heap;
+thread_local bool t_owner = false;  // this thread enabled the heap (one load, no call)
 
 std::size_t classOf(std::size_t bytes) { return (bytes - 1) / kGranule; }
 
 std::size_t blockBytes(std::size_t size_class) { return (size_class + 1) * kGranule; }
 
-bool onOwnerThread() { return pthread_equal(pthread_self(), g_heap.owner) != 0; }
-
 bool mapRegion() {
   void* region = mmap(nullptr, kRegionBytes, PROT_READ | PROT_WRITE,
                       MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
   if (region == MAP_FAILED) {
-    g_heap.enabled = false;
+    t_owner = false;
     return false;
   }
   g_heap.region = static_cast<char*>(region);
@@ -103,21 +100,40 @@ void* allocateLarge(std::size_t bytes) {
   }
 }
 
-void* allocate(std::size_t bytes) {
-  if (bytes - 1 < kLargestSmallBlock && g_heap.enabled && onOwnerThread()) {
+/// Everything but a small block from a free list or the class's current run: kept out of
+/// line, so that the common cases set up no frame.
+[[gnu::noinline]] void* allocateUncommon(std::size_t bytes) {
+  if (bytes - 1 < kLargestSmallBlock && t_owner) {
     if (void* block = takeBlock(classOf(bytes))) return block;
   }
   return allocateLarge(bytes);
 }
 
-void release(void* block) noexcept {
+inline void* allocate(std::size_t bytes) {
+  const std::size_t size_class = classOf(bytes);  // huge for 0 bytes
+  if (size_class < kClasses && t_owner) {
+    if (FreeBlock* block = g_heap.free_blocks[size_class]) {
+      g_heap.free_blocks[size_class] = block->next;
+      return block;
+    }
+    char* block = g_heap.next_block[size_class];
+    const std::size_t block_bytes = blockBytes(size_class);
+    if (static_cast<std::size_t>(g_heap.run_end[size_class] - block) >= block_bytes) {
+      g_heap.next_block[size_class] = block + block_bytes;
+      return block;
+    }
+  }
+  return allocateUncommon(bytes);
+}
+
+inline void release(void* block) noexcept {
   const std::uintptr_t offset =
       reinterpret_cast<std::uintptr_t>(block) - reinterpret_cast<std::uintptr_t>(g_heap.region);
-  if (!block || !g_heap.region || offset >= kRegionBytes) {
-    std::free(block);
+  if (offset >= kRegionBytes || !g_heap.region) {
+    std::free(block);  // also a null block
     return;
   }
-  if (!onOwnerThread()) return;  // left unused: the owner's free lists are not shared
+  if (!t_owner) return;  // left unused: the owner's free lists are not shared
   const std::size_t size_class = g_heap.run_class[offset / kRunBytes];
   auto* freed = static_cast<FreeBlock*>(block);
   freed->next = g_heap.free_blocks[size_class];
@@ -135,8 +151,9 @@ void* allocateNoThrow(std::size_t bytes) noexcept {
 }  // namespace
 
 void enableSmallObjectHeap() {
-  g_heap.owner = pthread_self();
+  if (g_heap.enabled) return;  // owned already (by this thread or another)
   g_heap.enabled = true;
+  t_owner = true;
 }
 #endif
 

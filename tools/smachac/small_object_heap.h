@@ -13,8 +13,8 @@ namespace smachac::driver {
 
 inline constexpr std::size_t kLargestSmallBlock = 512;
 
-/// Lets the calling thread allocate small blocks from the heap from now on (`smachac lsp`,
-/// whose threads share the documents, does not call it).
+/// Lets the calling thread allocate small blocks from the heap from now on, unless another
+/// thread did so first (`smachac lsp`, whose threads share the documents, does not call it).
 void enableSmallObjectHeap();
 
 }  // namespace smachac::driver

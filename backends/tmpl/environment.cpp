@@ -39,8 +39,9 @@ const Template& EnvironmentImpl::load(std::string_view name) {
     fail("template `" + std::string(name) + "` not found; looked in " +
          loader_.searchDescription());
   }
-  auto compiled = std::make_unique<Template>(std::string(name), source->origin, source->text(),
-                                             registry_, source->builtin, source->tokens);
+  auto compiled =
+      std::make_unique<Template>(std::string(name), source->origin, source->text(), registry_,
+                                 source->builtin, source->tokens, source->image);
   const Template& result = *compiled;
   templates_.emplace(std::string(name), std::move(compiled));
   return result;
@@ -337,6 +338,8 @@ std::optional<std::string> Environment::resolveScriptTemplate(std::string_view n
 }
 
 bool Environment::hasTemplate(std::string_view name) const { return impl_->exists(name); }
+
+const Template& Environment::compiled(std::string_view name) { return impl_->load(name); }
 
 void Environment::addTemplate(std::string name, std::string source) {
   impl_->loader().addMemory(std::move(name), std::move(source));

@@ -23,6 +23,7 @@
 namespace smachac::tmpl {
 
 class EnvironmentImpl;
+class Template;
 
 struct RenderOptions {
   /// Blocks removed from every template of the render, with their contents, as if absent
@@ -73,6 +74,10 @@ class Environment {
   /// order, `Foo`, `Foo.tpl.py`, `Foo.tpl`, then the first `Foo.tpl.<ext>` alphabetically.
   std::optional<std::string> resolveScriptTemplate(std::string_view name) const;
   bool hasTemplate(std::string_view name) const;
+  /// Template `name` compiled (once; raises Fault if there is none, TemplateError if it does
+  /// not compile): for the build's images of the
+  /// built-in templates (image/image_writer.h) and the tests that compare them.
+  const Template& compiled(std::string_view name);
 
   /// Adds an in-memory template, found before any directory (tests, generated templates).
   void addTemplate(std::string name, std::string source);

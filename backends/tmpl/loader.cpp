@@ -56,7 +56,7 @@ void Loader::addMemory(std::string name, std::string text) {
 
 std::optional<TemplateSource> Loader::load(std::string_view raw_name) const {
   if (auto it = memory_.find(raw_name); it != memory_.end())
-    return TemplateSource{it->first, it->second, false, {}, {}};
+    return TemplateSource{it->first, it->second, false, {}, {}, {}};
   std::optional<std::string> name = normalizeTemplateName(raw_name);
   if (!name) return std::nullopt;
   for (const std::string& dir : dirs_) {
@@ -64,12 +64,12 @@ std::optional<TemplateSource> Loader::load(std::string_view raw_name) const {
     if (!isRegularTemplateFile(path)) continue;
     std::optional<std::string> text = readFileText(path);
     if (!text) fail("cannot read template file `" + path + "`");
-    return TemplateSource{lexicallyNormal(std::move(path)), std::move(*text), false, {}, {}};
+    return TemplateSource{lexicallyNormal(std::move(path)), std::move(*text), false, {}, {}, {}};
   }
   for (const std::string& set : builtin_sets_) {
     if (const EmbeddedFile* file = findBuiltin(set + *name)) {
-      return TemplateSource{
-          "<builtin>/" + std::string(file->path), {}, true, file->content, file->tokens};
+      std::string origin = "<builtin>/" + std::string(file->path);
+      return TemplateSource{std::move(origin), {}, true, file->content, file->tokens, file->image};
     }
   }
   return std::nullopt;

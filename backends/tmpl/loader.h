@@ -22,6 +22,7 @@ struct TemplateSource {
   bool builtin = false;           // from the embedded table (text that the build checked compiles)
   std::string_view builtin_text;  // a built-in template's text: a view of the table
   std::span<const uint32_t> tokens;  // the build's tokens of a built-in template, if any
+  std::span<const uint8_t> image;    // the build's image of a built-in template, if any
 
   std::string_view text() const { return builtin ? builtin_text : std::string_view(read); }
 };

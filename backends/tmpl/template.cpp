@@ -12,7 +12,8 @@
 namespace smachac::tmpl {
 
 Template::Template(std::string name, std::string origin, std::string_view source,
-                   const Registry& registry, bool builtin, std::span<const uint32_t> tokens)
+                   const Registry& registry, bool builtin, std::span<const uint32_t> tokens,
+                   std::span<const uint8_t> image)
     : name_(std::move(name)), origin_(std::move(origin)), registry_(registry) {
   std::optional<std::string_view> in_place =
       builtin ? normalizedInPlace(source) : std::optional<std::string_view>();
@@ -22,6 +23,7 @@ Template::Template(std::string name, std::string origin, std::string_view source
     owned_source_ = normalizeSource(source);
     source_ = owned_source_;
   }
+  if (builtin && !image.empty() && loadImage(image)) return;
   try {
     std::optional<std::span<const Token>> stored = storedTokens(tokens, source_);
     std::vector<Token> lexed = stored ? std::vector<Token>() : tokenize(source_);
@@ -40,7 +42,38 @@ Template::Template(std::string name, std::string origin, std::string_view source
   }
 }
 
+bool Template::loadImage(std::span<const uint8_t> image) {
+  std::unique_ptr<ImageReader> reader = ImageReader::open(image, source_, registry_);
+  ImageTemplate loaded;
+  if (!reader || !reader->readTemplate(arena_, loaded)) return false;
+  body_ = std::move(loaded.body);
+  root_frame_ = std::move(loaded.root_frame);
+  blocks_ = std::move(loaded.blocks);
+  references_ = std::move(loaded.references);
+  has_extends_ = loaded.has_extends;
+  names_templates_ = loaded.names_templates;
+  image_deferred_ = std::move(loaded.deferred);
+  if (!image_deferred_.empty()) image_reader_ = std::move(reader);
+  from_image_ = true;
+  return true;
+}
+
+void Template::completeFromImage(const MacroStmt& macro) const {
+  auto it = std::find_if(image_deferred_.begin(), image_deferred_.end(),
+                         [&](const ImageMacro& d) { return d.macro == &macro; });
+  if (it == image_deferred_.end()) return;
+  try {
+    image_reader_->readMacro(*it, arena_);
+  } catch (const Fault& fault) {
+    throw error(macro.pos, fault.message());
+  }
+  it->macro->deferred = false;
+  image_deferred_.erase(it);
+  if (image_deferred_.empty()) image_reader_.reset();
+}
+
 void Template::completeMacro(const MacroStmt& macro) const {
+  if (from_image_) return completeFromImage(macro);
   auto it = std::find_if(deferred_.begin(), deferred_.end(),
                          [&](const DeferredMacro& d) { return d.macro == &macro; });
   if (it == deferred_.end()) return;

@@ -13,6 +13,7 @@
 #include "backends/tmpl/ast/ast.h"
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/filters/builtins.h"
+#include "backends/tmpl/image/image_reader.h"
 #include "backends/tmpl/parser/parser.h"
 
 namespace smachac::tmpl {
@@ -49,8 +50,11 @@ class Template {
   /// their first call (parser/deferred_macro.cpp).
   /// `tokens`, if given, are the build's tokens of `source` (lexer/token_table.h), used
   /// instead of lexing it when they fit it. `registry` must outlive the template.
+  /// `image`, if given, is the build's image of a built-in template (image/image_format.h),
+  /// loaded instead of compiling when it fits the source and the registry.
   Template(std::string name, std::string origin, std::string_view source, const Registry& registry,
-           bool builtin = false, std::span<const uint32_t> tokens = {});
+           bool builtin = false, std::span<const uint32_t> tokens = {},
+           std::span<const uint8_t> image = {});
   Template(const Template&) = delete;
   Template& operator=(const Template&) = delete;
 
@@ -67,6 +71,8 @@ class Template {
   /// Whether it has an extends, include or import tag (by a literal name or not). One that has
   /// none renders and exports the same under every skip policy that skips its blocks alike.
   bool namesTemplates() const { return names_templates_; }
+  /// Whether it was loaded from the build's image rather than compiled from its source.
+  bool loadedFromImage() const { return from_image_; }
 
   /// 1-based line and column (in characters) of byte offset `pos`.
   std::pair<int, int> lineColumn(uint32_t pos) const;
@@ -79,6 +85,10 @@ class Template {
  private:
   /// Keeps the token stream for the deferred macros (`lexed` owns it unless it is empty).
   void keepTokens(std::span<const Token> stream, std::vector<Token> lexed) const;
+  /// Takes the template from `image`; false (nothing taken) if the image does not fit.
+  bool loadImage(std::span<const uint8_t> image);
+  /// Completes `macro` from the image if it waits there.
+  void completeFromImage(const MacroStmt& macro) const;
 
   std::string name_;
   std::string origin_;
@@ -97,6 +107,10 @@ class Template {
   mutable std::span<const Token> tokens_;
   mutable std::vector<Token> lexed_tokens_;
   mutable std::vector<DeferredMacro> deferred_;
+  // Loaded from an image: its reader, kept while macros wait in it.
+  bool from_image_ = false;
+  mutable std::unique_ptr<ImageReader> image_reader_;
+  mutable std::vector<ImageMacro> image_deferred_;
 };
 
 }  // namespace smachac::tmpl

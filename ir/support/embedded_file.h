@@ -14,6 +14,9 @@ struct EmbeddedFile {
   /// For a template, the token stream the build's lexer made of it (packed as
   /// backends/tmpl/lexer/token_table.h says), so that it is not lexed again; else empty.
   std::span<const uint32_t> tokens = {};
+  /// For a template, its parsed and analysed form, which the engine loads instead of
+  /// compiling it (backends/tmpl/image/image_format.h); else empty.
+  std::span<const uint8_t> image = {};
 };
 
 }  // namespace smachac

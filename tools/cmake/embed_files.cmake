@@ -1,19 +1,27 @@
-# smachac_embed_files(<target> [TOKENS] NAMESPACE <ns> FUNCTION <fn> BASE_DIR <dir>
+# smachac_embed_files(<target> [TOKENS] [IMAGES] NAMESPACE <ns> FUNCTION <fn> BASE_DIR <dir>
 #                     FILES <files...>)
 #
 # Builds a static library <target> with one function
 #   std::span<const smachac::EmbeddedFile> <ns>::<fn>();
 # listing every file (path relative to BASE_DIR, bytes) in the order given; with TOKENS, also
 # each file's tokens as the template engine lexes it (the files are templates; one that does
-# not lex fails the build). The generator is embed_gen.cpp; the generated source is rebuilt
+# not lex fails the build); with IMAGES, also each template's parsed and analysed image
+# (backends/tmpl/image/image_format.h), compiled with the filters of its set (the first folder
+# of its path: target_extensions.h). The generator is embed_gen.cpp; the generated source is rebuilt
 # whenever one of the files changes. Used to embed templates/ into the
 # compiler so that a built binary needs no data files. The calling folder is the library's
 # include root (its header declares <fn>).
 function(smachac_embed_files target)
-  cmake_parse_arguments(EMB "TOKENS" "NAMESPACE;FUNCTION;BASE_DIR" "FILES" ${ARGN})
+  cmake_parse_arguments(EMB "TOKENS;IMAGES" "NAMESPACE;FUNCTION;BASE_DIR" "FILES" ${ARGN})
   if(NOT TARGET smachac_embed_gen)
-    add_executable(smachac_embed_gen "${PROJECT_SOURCE_DIR}/tools/cmake/embed_gen.cpp")
-    target_link_libraries(smachac_embed_gen PRIVATE smachac_tmpl)
+    # The targets' filter files are compiled into the tool itself (as for meta_table_gen):
+    # smachac_backends links the embedded table this tool writes.
+    add_executable(smachac_embed_gen "${PROJECT_SOURCE_DIR}/tools/cmake/embed_gen.cpp"
+                   "${PROJECT_SOURCE_DIR}/backends/smach/python_extensions.cpp"
+                   "${PROJECT_SOURCE_DIR}/backends/smach/python_code.cpp"
+                   "${PROJECT_SOURCE_DIR}/backends/cpp/cpp_extensions.cpp")
+    target_include_directories(smachac_embed_gen PRIVATE "${PROJECT_SOURCE_DIR}")
+    target_link_libraries(smachac_embed_gen PRIVATE smachac_generator smachac_tmpl)
   endif()
   set(out "${CMAKE_CURRENT_BINARY_DIR}/${target}_embedded.cpp")
   # The list of files as a dependency: adding or removing one regenerates the table.
@@ -23,7 +31,10 @@ function(smachac_embed_files target)
   configure_file("${list_file}.in" "${list_file}" COPYONLY)
   set(tokens_flag "")
   if(EMB_TOKENS)
-    set(tokens_flag "--tokens")
+    list(APPEND tokens_flag "--tokens")
+  endif()
+  if(EMB_IMAGES)
+    list(APPEND tokens_flag "--images")
   endif()
   # The generator rewrites the source only when it changes (nothing recompiles after a rebuilt
   # generator that writes the same table); the stamp records that it ran.

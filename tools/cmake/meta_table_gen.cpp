@@ -4,8 +4,7 @@
 // up instead of parsing. Rules: a template whose meta block cannot be read, or renders to
 // text that is not in its source verbatim (template syntax inside the block: the result could
 // depend on the -I directories), gets no row and is read at run time as before. Templates are
-// read with their target's filters registered (cpp/: C++'s, the others: Python's), as
-// backends/meta/template_check.cpp registers them.
+// read with their target's filters registered (target_extensions.h).
 // Usage: smachac_meta_table_gen OUT_FILE BASE_DIR TEMPLATE_FILE...
 #include <algorithm>
 #include <exception>
@@ -17,11 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "backends/cpp/cpp_extensions.h"
 #include "backends/meta/template_meta.h"
-#include "backends/smach/python_extensions.h"
 #include "backends/tmpl/environment.h"
 #include "cpp_literal.h"
+#include "target_extensions.h"
 
 namespace {
 
@@ -61,11 +59,7 @@ std::optional<std::optional<TemplateMeta>> precompile(const Source& source,
     // The filters and tests of the set's target, as the template checks register them: the
     // engine refuses a template that names a filter it does not know.
     smachac::generator::ValueConverter converter;
-    if (set == "cpp/") {
-      smachac::backends::cpp::registerCppExtensions(env, converter, false);
-    } else {
-      smachac::backends::smach::registerPythonExtensions(env, converter, false);
-    }
+    smachac::build::registerSetExtensions(env, set, converter);
     std::optional<std::string> text = env.metaBlock(source.path.substr(slash + 1));
     if (!text) return std::optional<TemplateMeta>();
     if (source.text.find(*text) == std::string::npos) return std::nullopt;

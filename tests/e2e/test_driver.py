@@ -13,6 +13,12 @@ EXAMPLES = os.path.join(ROOT, "examples", "core")
 VALID = "name: t\ntemplate: Base\noutcomes: [done]\nstates:\n  - A: {template: S, transitions: {x: done}}\n"
 
 
+def current_umask():
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
 def run(*args, cwd=None, env=None):
     return subprocess.run([SMACHAC, *args], capture_output=True, text=True, cwd=cwd, env=env,
                           timeout=120)
@@ -64,6 +70,33 @@ class ExitCodes(TempDirTest):
         self.assertTrue(stat.S_ISFIFO(os.stat(fifo).st_mode))
         self.assertTrue(received and received[0].startswith("base t template=Base @1:1\n"))
         self.assertEqual(sorted(os.listdir(self.dir)), ["ok.yml", "out.fifo"])
+
+    def test_output_over_existing_files(self):
+        # An existing regular file is replaced by a new one (exchanged with the staged file,
+        # tools/smachac/output.cpp): a hard link to it keeps the old content, nothing is left
+        # behind. A symbolic link is replaced by the file, a directory refused, as by a rename.
+        script = self.write("ok.yml", VALID)
+        out = self.write("out.ir", "old\n")
+        os.link(out, os.path.join(self.dir, "old.ir"))
+        target = self.write("target.ir", "target\n")
+        link = os.path.join(self.dir, "link.ir")
+        os.symlink(target, link)
+        os.mkdir(os.path.join(self.dir, "dir.ir"))
+        for path in (out, link):
+            r = run("-target=ir", script, "-o", path)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(path) as f:
+                self.assertTrue(f.read().startswith("base t template=Base @1:1\n"))
+            self.assertEqual(stat.S_IMODE(os.stat(path).st_mode), 0o666 & ~current_umask())
+        self.assertFalse(os.path.islink(link))
+        with open(os.path.join(self.dir, "old.ir")) as f:
+            self.assertEqual(f.read(), "old\n")
+        with open(target) as f:
+            self.assertEqual(f.read(), "target\n")
+        self.assertEqual(run("-target=ir", script, "-o", os.path.join(self.dir, "dir.ir")).returncode, 2)
+        self.assertTrue(os.path.isdir(os.path.join(self.dir, "dir.ir")))
+        self.assertEqual(sorted(os.listdir(self.dir)),
+                         ["dir.ir", "link.ir", "ok.yml", "old.ir", "out.ir", "target.ir"])
 
     def test_double_dash_spelling(self):
         script = self.write("ok.yml", VALID)

@@ -36,11 +36,35 @@ struct StagedFile {
   std::string path;
   std::string temporary;  ///< empty: written directly
   const std::string* direct_content = nullptr;
+  bool replaces_file = false;  ///< the destination is a regular file (exchanged, not renamed over)
 };
+
+/// The destination's type (S_IFMT bits), 0 if there is none.
+mode_t destinationType(const std::string& path) {
+  struct stat info {};
+  return ::lstat(path.c_str(), &info) == 0 ? info.st_mode & S_IFMT : 0;
+}
 
 bool isSpecialFile(const std::string& path) {
   struct stat info {};
   return ::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode);
+}
+
+// Puts the staged file in place of an existing regular file by exchanging the two names, then
+// removes the old content: as atomic as a rename over it (the path always names a whole file),
+// but ext4 writes back a file renamed over another at the rename (auto_da_alloc), which cost
+// 0.14-0.28 ms a compile here on an idle disk and milliseconds on a busy one. Elsewhere, or
+// where the exchange is not supported, a rename.
+int replace(const StagedFile& file) {
+  const char* staged = file.temporary.c_str();
+  const char* path = file.path.c_str();
+  if (file.replaces_file && ::renameat2(AT_FDCWD, staged, AT_FDCWD, path, RENAME_EXCHANGE) == 0) {
+    // `staged` now names the previous content; if that was no longer a file (a directory put
+    // there since), exchange back and let the rename report it.
+    if (::unlink(staged) == 0) return 0;
+    ::renameat2(AT_FDCWD, staged, AT_FDCWD, path, RENAME_EXCHANGE);
+  }
+  return ::rename(staged, path);
 }
 
 std::optional<std::string> writeDirectly(const StagedFile& file) {
@@ -54,7 +78,7 @@ std::optional<std::string> writeDirectly(const StagedFile& file) {
 
 std::optional<std::string> commit(const StagedFile& file) {
   if (file.direct_content) return writeDirectly(file);
-  if (::rename(file.temporary.c_str(), file.path.c_str()) != 0) {
+  if (replace(file) != 0) {
     return "cannot write `" + file.path + "`: " + errnoText();
   }
   return std::nullopt;
@@ -80,7 +104,7 @@ std::optional<std::string> stage(const std::string& path, const std::string& con
     ::unlink(pattern.c_str());
     return "cannot write `" + path + "`: " + *error;
   }
-  staged = {path, pattern};
+  staged = {path, pattern, nullptr, destinationType(path) == S_IFREG};
   return std::nullopt;
 }
 

@@ -1,7 +1,9 @@
 // Writing generated files atomically: the content goes to a temporary file next to the
-// destination, which is then renamed over it. A failed run never leaves a partial file and
-// never clobbers an existing one. A destination that exists and is no regular file
-// (`/dev/null`, a FIFO) is written into directly: renaming over it would replace it by a file.
+// destination, which then takes its place (renamed over it, or exchanged with an existing
+// regular file, whose old content is then removed: output.cpp says why). A failed run never
+// leaves a partial file and never clobbers an existing one. A destination that exists and is
+// no regular file (`/dev/null`, a FIFO) is written into directly: renaming over it would
+// replace it by a file.
 #pragma once
 
 #include <optional>

@@ -26,7 +26,10 @@ namespace {
 constexpr std::size_t kGranule = 16;  // every block is aligned as operator new promises
 constexpr std::size_t kClasses = kLargestSmallBlock / kGranule;
 constexpr std::size_t kRunBytes = 1024;
-constexpr std::size_t kRegionBytes = std::size_t{4} << 20;
+// Room for a typical compile's small blocks (about 0.1 MB). A big script's compile fills it
+// and goes on with malloc: with 4 MiB or more the flat 10k and 100k compiles ran 2% slower
+// than on malloc alone (their blocks spread over the classes' runs), with 1 MiB 1% faster.
+constexpr std::size_t kRegionBytes = std::size_t{1} << 20;
 constexpr std::size_t kRuns = kRegionBytes / kRunBytes;
 
 struct FreeBlock {
@@ -45,6 +48,9 @@ struct SmallObjectHeap {
 
 SmallObjectHeap g_heap;
 thread_local bool t_owner = false;  // this thread enabled the heap (one load, no call)
+// The owner still takes small blocks: not once the region is full (or could not be mapped),
+// after which a compile's blocks come from malloc as directly as the heap allows.
+thread_local bool t_allocating = false;
 
 std::size_t classOf(std::size_t bytes) { return (bytes - 1) / kGranule; }
 
@@ -54,7 +60,7 @@ bool mapRegion() {
   void* region = mmap(nullptr, kRegionBytes, PROT_READ | PROT_WRITE,
                       MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
   if (region == MAP_FAILED) {
-    t_owner = false;
+    t_allocating = false;
     return false;
   }
   g_heap.region = static_cast<char*>(region);
@@ -64,7 +70,10 @@ bool mapRegion() {
 /// Starts a new run for `size_class`; false when the region is full or cannot be mapped.
 bool startRun(std::size_t size_class) {
   if (!g_heap.region && !mapRegion()) return false;
-  if (g_heap.runs_used == kRuns) return false;
+  if (g_heap.runs_used == kRuns) {
+    t_allocating = false;
+    return false;
+  }
   char* run = g_heap.region + g_heap.runs_used * kRunBytes;
   g_heap.run_class[g_heap.runs_used++] = static_cast<uint8_t>(size_class);
   g_heap.next_block[size_class] = run;
@@ -103,7 +112,7 @@ void* allocateLarge(std::size_t bytes) {
 /// Everything but a small block from a free list or the class's current run: kept out of
 /// line, so that the common cases set up no frame.
 [[gnu::noinline]] void* allocateUncommon(std::size_t bytes) {
-  if (bytes - 1 < kLargestSmallBlock && t_owner) {
+  if (bytes - 1 < kLargestSmallBlock && t_allocating) {
     if (void* block = takeBlock(classOf(bytes))) return block;
   }
   return allocateLarge(bytes);
@@ -111,7 +120,7 @@ void* allocateLarge(std::size_t bytes) {
 
 inline void* allocate(std::size_t bytes) {
   const std::size_t size_class = classOf(bytes);  // huge for 0 bytes
-  if (size_class < kClasses && t_owner) {
+  if (size_class < kClasses && t_allocating) {
     if (FreeBlock* block = g_heap.free_blocks[size_class]) {
       g_heap.free_blocks[size_class] = block->next;
       return block;
@@ -154,6 +163,7 @@ void enableSmallObjectHeap() {
   if (g_heap.enabled) return;  // owned already (by this thread or another)
   g_heap.enabled = true;
   t_owner = true;
+  t_allocating = true;
 }
 #endif
 

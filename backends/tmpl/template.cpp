@@ -30,11 +30,7 @@ Template::Template(std::string name, std::string origin, std::string_view source
     std::span<const Token> stream = stored ? *stored : std::span<const Token>(lexed);
     ParsedTemplate parsed = parseTemplate(source_, stream, registry, arena_, builtin);
     analyzeScopes(parsed, root_frame_);
-    body_ = std::move(parsed.body);
-    blocks_ = std::move(parsed.blocks);
-    references_ = std::move(parsed.references);
-    has_extends_ = parsed.has_extends;
-    names_templates_ = parsed.names_templates;
+    adopt(parsed);
     deferred_ = std::move(parsed.deferred);
     if (!deferred_.empty()) keepTokens(stream, std::move(lexed));
   } catch (const SyntaxFault& fault) {
@@ -42,16 +38,21 @@ Template::Template(std::string name, std::string origin, std::string_view source
   }
 }
 
+template <typename Compiled>
+void Template::adopt(Compiled& compiled) {
+  body_ = std::move(compiled.body);
+  blocks_ = std::move(compiled.blocks);
+  references_ = std::move(compiled.references);
+  has_extends_ = compiled.has_extends;
+  names_templates_ = compiled.names_templates;
+}
+
 bool Template::loadImage(std::span<const uint8_t> image) {
   std::unique_ptr<ImageReader> reader = ImageReader::open(image, source_, registry_);
   ImageTemplate loaded;
   if (!reader || !reader->readTemplate(arena_, loaded)) return false;
-  body_ = std::move(loaded.body);
+  adopt(loaded);
   root_frame_ = std::move(loaded.root_frame);
-  blocks_ = std::move(loaded.blocks);
-  references_ = std::move(loaded.references);
-  has_extends_ = loaded.has_extends;
-  names_templates_ = loaded.names_templates;
   image_deferred_ = std::move(loaded.deferred);
   if (!image_deferred_.empty()) image_reader_ = std::move(reader);
   from_image_ = true;

@@ -85,6 +85,9 @@ class Template {
  private:
   /// Keeps the token stream for the deferred macros (`lexed` owns it unless it is empty).
   void keepTokens(std::span<const Token> stream, std::vector<Token> lexed) const;
+  /// Takes the body, blocks, references and flags of a parsed or loaded template.
+  template <typename Compiled>
+  void adopt(Compiled& compiled);
   /// Takes the template from `image`; false (nothing taken) if the image does not fit.
   bool loadImage(std::span<const uint8_t> image);
   /// Completes `macro` from the image if it waits there.

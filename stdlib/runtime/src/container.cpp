@@ -60,7 +60,10 @@ void Container::propagatePath(const std::string& path) {
 
 void Container::propagateObservers(const Observers& observers) {
   State::propagateObservers(observers);
-  for (Child& child : children_) assignObservers(*child.state, observers);
+  for (Child& child : children_) {
+    child.view.trackWrites(false);  // runTraced() turns it on
+    assignObservers(*child.state, observers);
+  }
 }
 
 void Container::ensureChecked() {
@@ -87,13 +90,36 @@ void Container::collectCommonProblems(std::vector<std::string>& problems) const 
 }
 
 int Container::runChild(Child& child, std::string& other) {
-  TraceSink* sink = traceSink();
+  if (traceSink() != nullptr) return runTraced(child, other);
+  try {
+    return child.state->executeAt(child.view, other);
+  } catch (...) {
+    failedChild(*child.state);
+  }
+}
+
+int Container::runTraced(Child& child, std::string& other) {
+  TraceSink& sink = *traceSink();
   State& state = *child.state;
-  child.view.trackWrites(sink != nullptr);
-  if (sink != nullptr) sink->write({.kind = TraceKind::Enter, .state = state.path()});
+  child.view.trackWrites(true);
+  sink.write({.kind = TraceKind::Enter, .state = state.path()});
   int position = -1;
   try {
     position = state.executeAt(child.view, other);
+  } catch (...) {
+    failedChild(state);
+  }
+  sink.write(
+      {.kind = TraceKind::Exit,
+       .state = state.path(),
+       .outcome = position >= 0 ? state.outcomes()[static_cast<std::size_t>(position)] : other,
+       .written = &child.view.written()});
+  return position;
+}
+
+void Container::failedChild(const State& state) const {
+  try {
+    throw;
   } catch (const ExecutionError&) {
     throw;
   } catch (const ConsistencyError&) {
@@ -105,14 +131,6 @@ int Container::runChild(Child& child, std::string& other) {
   } catch (...) {
     fail(state, "state " + backticked(state.displayName()) + " failed: unknown exception");
   }
-  if (sink != nullptr) {
-    sink->write(
-        {.kind = TraceKind::Exit,
-         .state = state.path(),
-         .outcome = position >= 0 ? state.outcomes()[static_cast<std::size_t>(position)] : other,
-         .written = &child.view.written()});
-  }
-  return position;
 }
 
 void Container::fail(const State& who, const std::string& message) const {
@@ -121,14 +139,18 @@ void Container::fail(const State& who, const std::string& message) const {
 }
 
 void Container::copyInputKeys(UserData& parent) {
-  for (const std::string& key : inputKeys()) {
-    if (std::optional<Value> value = parent.find(key)) userdata_.set(key, std::move(*value));
+  const Keys& keys = inputKeys();
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (const Value* value = parent.findInput(i)) userdata_.set(keys[i], *value);
   }
 }
 
 void Container::copyOutputKeys(UserData& parent) {
-  for (const std::string& key : outputKeys()) {
-    if (std::optional<Value> value = userdata_.find(key)) parent.set(key, std::move(*value));
+  const Keys& keys = outputKeys();
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (std::optional<Value> value = userdata_.find(keys[i])) {
+      parent.setOutput(i, std::move(*value));
+    }
   }
 }
 

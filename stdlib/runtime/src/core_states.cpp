@@ -52,6 +52,11 @@ std::mutex& printMutex() {
   return mutex;
 }
 
+/// runCallbacks() for callbacks a state placed (placeCallbacks): written by position.
+void runPlaced(const Callbacks& callbacks, UserData& userdata) {
+  for (const auto& entry : callbacks) userdata.setOutput(entry.position, entry.callback(userdata));
+}
+
 }  // namespace
 
 void runCallbacks(const Callbacks& callbacks, UserData& userdata) {
@@ -87,12 +92,12 @@ CallbacksState::CallbacksState(StateSpec spec, Callbacks callbacks)
 }
 
 std::string CallbacksState::execute(UserData& userdata) {
-  runCallbacks(callbacks_, userdata);
+  runPlaced(callbacks_, userdata);
   return kSucceeded;
 }
 
 int CallbacksState::executeAt(UserData& userdata, std::string& other) {
-  runCallbacks(callbacks_, userdata);
+  runPlaced(callbacks_, userdata);
   if (succeeded_ < 0) other = kSucceeded;
   return succeeded_;
 }
@@ -123,7 +128,7 @@ RandomOutcomeState::RandomOutcomeState(StateSpec spec, Callbacks callbacks,
 }
 
 std::string RandomOutcomeState::execute(UserData& userdata) {
-  runCallbacks(callbacks_, userdata);
+  runPlaced(callbacks_, userdata);
   if (!seeded_) {
     std::optional<uint64_t> global = randomSeed();
     rng_ = seed_    ? *seed_
@@ -172,16 +177,16 @@ std::string ConditionalOutcomeState::execute(UserData& userdata) {
 }
 
 int ConditionalOutcomeState::executeAt(UserData& userdata, std::string& /*other*/) {
-  runCallbacks(callbacks_, userdata);
+  runPlaced(callbacks_, userdata);
   std::size_t chosen = conditions_.size();  // `default`, the last outcome
   for (std::size_t i = 0; i < conditions_.size(); ++i) {
-    std::optional<Value> condition = userdata.find(outcomes()[i], conditions_[i]);
-    if (condition && condition->truthy()) {
+    const Value* condition = userdata.findInput(conditions_[i]);
+    if (condition != nullptr && condition->truthy()) {
       chosen = i;
       break;
     }
   }
-  userdata.set(kOutcomeKey, outcome_key_, choices_[chosen]);
+  userdata.setOutput(outcome_key_, choices_[chosen]);
   return static_cast<int>(chosen);
 }
 

@@ -198,7 +198,7 @@ List candidates(std::initializer_list<Value> arguments, const char* function) {
 
 }  // namespace
 
-Value add(const Value& a, const Value& b) {
+Value detail::addAny(const Value& a, const Value& b) {
   if (a.type() == ValueType::String && b.type() == ValueType::String) {
     return a.as<std::string>() + b.as<std::string>();
   }
@@ -212,13 +212,13 @@ Value add(const Value& a, const Value& b) {
       [](double x, double y) { return x + y; });
 }
 
-Value subtract(const Value& a, const Value& b) {
+Value detail::subtractAny(const Value& a, const Value& b) {
   return arithmetic(
       "-", a, b, [](int64_t x, int64_t y, int64_t* r) { return __builtin_sub_overflow(x, y, r); },
       [](double x, double y) { return x - y; });
 }
 
-Value multiply(const Value& a, const Value& b) {
+Value detail::multiplyAny(const Value& a, const Value& b) {
   std::optional<Number> x = number(a), y = number(b);
   if (isSequence(a) && y && y->is_int) return repeated(a, y->i);
   if (isSequence(b) && x && x->is_int) return repeated(b, x->i);
@@ -276,7 +276,7 @@ Value plus(const Value& a) {
   return x->is_int ? Value(x->i) : Value(x->d);
 }
 
-bool equal(const Value& a, const Value& b) {
+bool detail::equalAny(const Value& a, const Value& b) {
   std::optional<Number> x = number(a), y = number(b);
   if (x && y) {
     if (x->is_int && y->is_int) return x->i == y->i;
@@ -307,11 +307,14 @@ bool equal(const Value& a, const Value& b) {
   return a == b;
 }
 
-bool notEqual(const Value& a, const Value& b) { return !equal(a, b); }
-bool less(const Value& a, const Value& b) { return compare(a, b, Order::Less); }
-bool lessEqual(const Value& a, const Value& b) { return compare(a, b, Order::LessEqual); }
-bool greater(const Value& a, const Value& b) { return compare(a, b, Order::Greater); }
-bool greaterEqual(const Value& a, const Value& b) { return compare(a, b, Order::GreaterEqual); }
+bool detail::lessAny(const Value& a, const Value& b) { return compare(a, b, Order::Less); }
+bool detail::lessEqualAny(const Value& a, const Value& b) {
+  return compare(a, b, Order::LessEqual);
+}
+bool detail::greaterAny(const Value& a, const Value& b) { return compare(a, b, Order::Greater); }
+bool detail::greaterEqualAny(const Value& a, const Value& b) {
+  return compare(a, b, Order::GreaterEqual);
+}
 
 Value len(const Value& a) {
   switch (a.type()) {

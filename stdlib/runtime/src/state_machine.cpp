@@ -45,7 +45,8 @@ void StateMachine::addState(std::string_view label, std::unique_ptr<State> state
 }
 
 void StateMachine::collectOwnProblems(std::vector<std::string>& problems) {
-  table_.assign(children().size(), {});
+  steps_.clear();
+  for (Child& child : children()) steps_.push_back({.child = &child, .targets = {}});
   for (std::size_t i = 0; i < children().size(); ++i) resolveChild(i, problems);
 }
 
@@ -66,9 +67,9 @@ void StateMachine::resolveChild(std::size_t index, std::vector<std::string>& pro
     int child = explicit_target ? indexOf(target) : -1;
     int own = indexIn(outcomes(), target);
     if (child >= 0) {
-      table_[index].push_back(child);
+      steps_[index].targets.push_back(child);
     } else if (own >= 0) {
-      table_[index].push_back(~own);
+      steps_[index].targets.push_back(~own);
     } else if (explicit_target) {
       problems.push_back(who + "outcome " + backticked(outcome) + " goes to " + backticked(target) +
                          ", which is neither a state nor an outcome of " + kindAndName());
@@ -89,15 +90,17 @@ std::string StateMachine::execute(UserData& parent) {
 
 std::string StateMachine::runFrom(std::size_t index) {
   for (;;) {
+    const Step& step = steps_[index];
     enterChild(static_cast<int>(index));
     int position = -1;
     try {
-      position = runChild(children()[index], other_);
+      position = runChild(*step.child, other_);
     } catch (...) {
       finishRun(index);
       throw;
     }
-    Target target = resolve(index, position);
+    if (position < 0) undeclaredOutcome(index);
+    Target target = step.targets[static_cast<std::size_t>(position)];
     emitTransition(index, position, target);
     if (target < 0) {
       finishRun(index);
@@ -109,7 +112,10 @@ std::string StateMachine::runFrom(std::size_t index) {
 
 void StateMachine::enterChild(int index) {
   current_.store(index);
-  if (!preemptRequested()) return;
+  if (preemptRequested()) enterPreempted();
+}
+
+void StateMachine::enterPreempted() {
   std::lock_guard lock(mutex_);
   if (preempted_ >= 0 && !childAt(preempted_).preemptRequested()) {
     State::servicePreempt();  // the last preempted child serviced the request
@@ -148,8 +154,7 @@ State& StateMachine::childAt(int index) {
   return *children()[static_cast<std::size_t>(index)].state;
 }
 
-StateMachine::Target StateMachine::resolve(std::size_t index, int position) const {
-  if (position >= 0) return table_[index][static_cast<std::size_t>(position)];
+void StateMachine::undeclaredOutcome(std::size_t index) const {
   const State& state = *children()[index].state;
   fail(state, "state " + backticked(state.displayName()) + " returned outcome " +
                   backticked(other_) + ", which is not one of its outcomes");

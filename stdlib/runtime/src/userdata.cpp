@@ -127,20 +127,43 @@ void UserData::undeclared(std::string_view key, bool write) const {
                       keyList(write ? state_->outputKeys() : state_->inputKeys()) + ")");
 }
 
-std::optional<Value> UserData::findFirst(std::string_view key, std::size_t position) const {
-  Slot& slot = inputSlot(key, position);
+Value* UserData::entryOf(Slot& slot) const {
   if (slot.entry == nullptr) slot.entry = store_->entryOf(slot.target);
-  if (slot.entry == nullptr) return std::nullopt;
-  return store_->load(*slot.entry);
+  return slot.entry;
 }
 
-Value UserData::atFirst(std::string_view key, std::size_t position) const {
-  std::optional<Value> value = findFirst(key, position);
-  if (value) return std::move(*value);
+std::optional<Value> UserData::findFirst(std::string_view key, std::size_t position) const {
+  Value* entry = entryOf(inputSlot(key, position));
+  if (entry == nullptr) return std::nullopt;
+  return store_->load(*entry);
+}
+
+const Value& UserData::sharedCopy(std::size_t position) const {
+  Slot& slot = inputs_[position];
+  return read(slot, *slot.entry);
+}
+
+const Value& UserData::atOther(std::string_view key, std::size_t position) const {
+  Slot& slot = inputSlot(key, position);
+  if (const Value* entry = entryOf(slot)) return read(slot, *entry);
   std::string_view target = remap(key);
   std::string remapped = target == key ? "" : " (remapped to " + backticked(target) + ")";
   throw UserDataError("state " + backticked(state_->displayName()) + " reads userdata key " +
                       backticked(key) + remapped + ", which is not set");
+}
+
+const Value* UserData::findInputFirst(std::size_t position) const {
+  const Keys& keys = state_->inputKeys();
+  if (position >= keys.size()) undeclaredPosition(position, false);
+  Slot& slot = slotAt(inputs_, keys.size(), position, keys[position]);
+  const Value* entry = entryOf(slot);
+  return entry != nullptr ? &read(slot, *entry) : nullptr;
+}
+
+void UserData::setOutputFirst(std::size_t position, Value&& value) {
+  const Keys& keys = state_->outputKeys();
+  if (position >= keys.size()) undeclaredPosition(position, true);
+  setFirst(keys[position], position, std::move(value));
 }
 
 void UserData::setFirst(std::string_view key, std::size_t position, Value value) {
@@ -155,6 +178,14 @@ void UserData::setFirst(std::string_view key, std::size_t position, Value value)
     written_.push_back(target);
   }
 }
+
+void UserData::undeclaredPosition(std::size_t position, bool write) const {
+  throw UserDataError(
+      "state " + backticked(state_->displayName()) + " has no " + (write ? "output" : "input") +
+      " key at position " + std::to_string(position) + " (" + (write ? "output" : "input") +
+      " keys: " + keyList(write ? state_->outputKeys() : state_->inputKeys()) + ")");
+}
+
 std::string UserData::typeMessage(std::string_view key, const TypeError& e) const {
   return "state " + backticked(state_->displayName()) + " reads userdata key " + backticked(key) +
          " as " + e.expected() + ", but it holds " + e.actual();

@@ -58,7 +58,9 @@ std::string_view typeName(ValueType type) {
 Value::Value(List items) : data_(std::make_shared<const List>(std::move(items))) {}
 Value::Value(Map entries) : data_(std::make_shared<const Map>(std::move(entries))) {}
 
-bool Value::truthy() const {
+bool Value::identical(const Value& other) const { return data_ == other.data_; }
+
+bool Value::truthyOther() const {
   switch (type()) {
     case ValueType::Null:
       return false;

@@ -52,6 +52,24 @@ TEST_CASE("refused operations throw Python's messages") {
   CHECK_THROWS_AS(ops::abs(std::numeric_limits<int64_t>::min()), ops::ExpressionError);
 }
 
+TEST_CASE("two ints are computed inline; overflow and other operands as in general") {
+  constexpr int64_t kMax = std::numeric_limits<int64_t>::max();
+  constexpr int64_t kMin = std::numeric_limits<int64_t>::min();
+  CHECK(ops::add(-3, 5) == rt::Value(2));
+  CHECK(ops::subtract(3, 5) == rt::Value(-2));
+  CHECK(ops::multiply(-4, 5) == rt::Value(-20));
+  CHECK(ops::add(2, 0.5).type() == rt::ValueType::Double);
+  CHECK(ops::add(true, 1) == rt::Value(2));
+  CHECK_THROWS_WITH(ops::subtract(kMin, 1), "integer overflow in `-` (ints are 64-bit)");
+  CHECK_THROWS_WITH(ops::multiply(kMax, 2), "integer overflow in `*` (ints are 64-bit)");
+  CHECK(ops::less(kMin, kMax));
+  CHECK(ops::lessEqual(-1, -1));
+  CHECK_FALSE(ops::greater(-1, 0));
+  CHECK(ops::greaterEqual(0, -1));
+  CHECK(ops::notEqual(1, 2));
+  CHECK_FALSE(ops::equal(kMax, kMax - 1));
+}
+
 TEST_CASE("comparisons") {
   CHECK(ops::equal(1, 1.0));
   CHECK(ops::equal(true, 1));

@@ -61,6 +61,20 @@ TEST_CASE("events come in execution order with outcomes, targets and written key
   for (std::size_t i = 1; i < records.size(); ++i) CHECK(records[i].t_us >= records[i - 1].t_us);
 }
 
+TEST_CASE("a sink attached again after untraced runs sees each run's written keys") {
+  auto sm = twoStep();
+  sm->setTraceSink(std::make_shared<rt::RecordingSink>());
+  REQUIRE(rt::run(*sm).ok());
+  sm->setTraceSink(nullptr);
+  REQUIRE(rt::run(*sm).ok());
+  auto sink = std::make_shared<rt::RecordingSink>();
+  sm->setTraceSink(sink);
+  REQUIRE(rt::run(*sm).ok());
+  auto records = sink->records();
+  REQUIRE(records.size() == 11);
+  CHECK(records[8].written == std::vector<std::string>{"y", "parent_x"});
+}
+
 TEST_CASE("a state added after the sink is attached is traced too") {
   StateMachine sm({.outcomes = {"done"}});
   auto sink = std::make_shared<rt::RecordingSink>();

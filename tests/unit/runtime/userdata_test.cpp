@@ -161,3 +161,48 @@ TEST_CASE("a view sees keys set after its first read, and writes others see") {
                        "state `root` writes undeclared userdata key `x` (output keys: `y`)",
                        rt::UserDataError);
 }
+
+TEST_CASE("at() by position is the entry itself in a machine's scope, a copy in a shared one") {
+  auto state = std::make_unique<LambdaState>(StateSpec{.outcomes = {"done"}, .input_keys = {"x"}},
+                                             [](UserData&) { return "done"; });
+  rt::UserDataStore own;
+  own.setShared(false);
+  own.set("x", 1);
+  UserData own_view(own, *state);
+  const Value& entry = own_view.at("x", 0);
+  own.set("x", 2);
+  CHECK(entry.as<int64_t>() == 2);  // the store's entry, which the write changed
+  rt::UserDataStore shared;
+  shared.set("x", 1);
+  UserData shared_view(shared, *state);
+  const Value& copy = shared_view.at("x", 0);
+  shared.set("x", 2);
+  CHECK(copy.as<int64_t>() == 1);  // the view's copy, until the next read of `x`
+  CHECK(shared_view.at("x", 0).as<int64_t>() == 2);
+  CHECK(shared_view.at("x", 5).as<int64_t>() == 2);  // a wrong position: searched for
+}
+
+TEST_CASE("reads and writes by position") {
+  auto state = std::make_unique<LambdaState>(
+      StateSpec{.outcomes = {"done"}, .input_keys = {"x", "y"}, .output_keys = {"y"}},
+      [](UserData&) { return "done"; });
+  for (bool shared : {false, true}) {
+    rt::UserDataStore store;
+    store.setShared(shared);
+    rt::Remapping remapping{{"y", "parent_y"}};
+    UserData view(store, *state, &remapping);
+    CHECK(view.findInput(1) == nullptr);  // not set yet
+    view.setOutput(0, Value(1));
+    REQUIRE(view.findInput(1) != nullptr);
+    CHECK(*view.findInput(1) == Value(1));
+    const Value kept(1.0);
+    view.setOutput(0, kept);  // equal in Python, but another type: written
+    CHECK(store.at("parent_y").type() == rt::ValueType::Double);
+    CHECK_THROWS_WITH_AS(view.setOutput(1, Value(2)),
+                         "state `root` has no output key at position 1 (output keys: `y`)",
+                         rt::UserDataError);
+    CHECK_THROWS_WITH_AS(view.findInput(2),
+                         "state `root` has no input key at position 2 (input keys: `x`, `y`)",
+                         rt::UserDataError);
+  }
+}

@@ -75,6 +75,10 @@ class Container : public State {
 
  private:
   std::string childPath(const std::string& label) const;
+  /// runChild() with a trace sink: enter and exit events, the keys the child wrote.
+  int runTraced(Child& child, std::string& other);
+  /// In a handler: rethrows what `state` threw as an ExecutionError naming it (see fail()).
+  [[noreturn]] void failedChild(const State& state) const;
   void collectCommonProblems(std::vector<std::string>& problems) const;
 
   UserDataStore userdata_;

@@ -28,21 +28,64 @@ class ExpressionError : public Error {
   using Error::Error;
 };
 
-Value add(const Value& a, const Value& b);
-Value subtract(const Value& a, const Value& b);
-Value multiply(const Value& a, const Value& b);
+namespace detail {
+// The operators on any operands; the inline ones below call them unless both are ints.
+Value addAny(const Value& a, const Value& b);
+Value subtractAny(const Value& a, const Value& b);
+Value multiplyAny(const Value& a, const Value& b);
+bool equalAny(const Value& a, const Value& b);
+bool lessAny(const Value& a, const Value& b);
+bool lessEqualAny(const Value& a, const Value& b);
+bool greaterAny(const Value& a, const Value& b);
+bool greaterEqualAny(const Value& a, const Value& b);
+}  // namespace detail
+
+// Two ints, what counters and limits hold, are added and compared inline.
+inline Value add(const Value& a, const Value& b) {
+  const int64_t *x = a.intIf(), *y = b.intIf();
+  int64_t result = 0;
+  if (x != nullptr && y != nullptr && !__builtin_add_overflow(*x, *y, &result)) return result;
+  return detail::addAny(a, b);
+}
+inline Value subtract(const Value& a, const Value& b) {
+  const int64_t *x = a.intIf(), *y = b.intIf();
+  int64_t result = 0;
+  if (x != nullptr && y != nullptr && !__builtin_sub_overflow(*x, *y, &result)) return result;
+  return detail::subtractAny(a, b);
+}
+inline Value multiply(const Value& a, const Value& b) {
+  const int64_t *x = a.intIf(), *y = b.intIf();
+  int64_t result = 0;
+  if (x != nullptr && y != nullptr && !__builtin_mul_overflow(*x, *y, &result)) return result;
+  return detail::multiplyAny(a, b);
+}
 Value divide(const Value& a, const Value& b);
 Value floorDivide(const Value& a, const Value& b);
 Value modulo(const Value& a, const Value& b);
 Value negate(const Value& a);
 Value plus(const Value& a);
 
-bool equal(const Value& a, const Value& b);
-bool notEqual(const Value& a, const Value& b);
-bool less(const Value& a, const Value& b);
-bool lessEqual(const Value& a, const Value& b);
-bool greater(const Value& a, const Value& b);
-bool greaterEqual(const Value& a, const Value& b);
+inline bool equal(const Value& a, const Value& b) {
+  const int64_t *x = a.intIf(), *y = b.intIf();
+  return x != nullptr && y != nullptr ? *x == *y : detail::equalAny(a, b);
+}
+inline bool notEqual(const Value& a, const Value& b) { return !equal(a, b); }
+inline bool less(const Value& a, const Value& b) {
+  const int64_t *x = a.intIf(), *y = b.intIf();
+  return x != nullptr && y != nullptr ? *x < *y : detail::lessAny(a, b);
+}
+inline bool lessEqual(const Value& a, const Value& b) {
+  const int64_t *x = a.intIf(), *y = b.intIf();
+  return x != nullptr && y != nullptr ? *x <= *y : detail::lessEqualAny(a, b);
+}
+inline bool greater(const Value& a, const Value& b) {
+  const int64_t *x = a.intIf(), *y = b.intIf();
+  return x != nullptr && y != nullptr ? *x > *y : detail::greaterAny(a, b);
+}
+inline bool greaterEqual(const Value& a, const Value& b) {
+  const int64_t *x = a.intIf(), *y = b.intIf();
+  return x != nullptr && y != nullptr ? *x >= *y : detail::greaterEqualAny(a, b);
+}
 
 Value len(const Value& a);
 Value abs(const Value& a);

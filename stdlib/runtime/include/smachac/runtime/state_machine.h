@@ -73,19 +73,26 @@ class StateMachine : public Container {
   void resolveChild(std::size_t index, std::vector<std::string>& problems);
   std::string runFrom(std::size_t index);
   void enterChild(int index);
+  /// enterChild() with a preempt request pending: passes it on, or takes it back (serviced).
+  void enterPreempted();
   void finishRun(std::size_t last);
   void preemptCurrentLocked();
   State& childAt(int index);
-  /// Where outcome `position` of child `index` leads; fails for an undeclared outcome (-1).
-  Target resolve(std::size_t index, int position) const;
+  /// Fails for an undeclared outcome (position -1) of child `index`.
+  [[noreturn]] void undeclaredOutcome(std::size_t index) const;
   void emitTransition(std::size_t index, int position, Target target) const;
 
-  std::vector<Transitions> transitions_;    ///< per child, as added
-  std::vector<std::vector<Target>> table_;  ///< per child, per declared outcome
-  LightMutex mutex_;                        ///< guards preempted_ and current_'s readers
-  std::atomic<int> current_{-1};            ///< the child running or about to run, or -1
-  int preempted_ = -1;                      ///< the child last asked to preempt, or -1
-  std::string other_;                       ///< an undeclared outcome a child returned
+  std::vector<Transitions> transitions_;  ///< per child, as added
+  /// A child and where its outcomes lead, what a transition reads.
+  struct Step {
+    Child* child;
+    std::vector<Target> targets;  ///< per declared outcome
+  };
+  std::vector<Step> steps_;       ///< per child, resolved by the check
+  LightMutex mutex_;              ///< guards preempted_ and current_'s readers
+  std::atomic<int> current_{-1};  ///< the child running or about to run, or -1
+  int preempted_ = -1;            ///< the child last asked to preempt, or -1
+  std::string other_;             ///< an undeclared outcome a child returned
 };
 
 }  // namespace smachac::runtime

@@ -5,16 +5,18 @@
 //   the state reads `x`   -> `x` must be one of its input keys  -> the store's remapping[x] or x
 //   the state writes `y`  -> `y` must be one of its output keys -> the store's remapping[y] or y
 //
-// Reads return copies (Values share their lists), so concurrent children of a Concurrence can
-// use one scope safely: a shared store (a Concurrence's) is locked at every access. A state
-// machine's store is used by one thread at a time (its children run one after another), so
-// views read and write it without the lock; from outside, use it only while nothing runs.
+// Reads from a shared store (a Concurrence's, whose children run at the same time) are copies
+// made under its lock (Values share their lists). A state machine's store is used by one
+// thread at a time (its children run one after another), so views read and write it without
+// the lock, and a read by position gives the entry itself; from outside, use such a store only
+// while nothing runs.
 //
 // A view keeps a slot per declared key (its position in inputKeys() or outputKeys()),
 // resolved at the key's first use: the store key it is remapped to and the store's entry for
 // it (a store never removes an entry, so the entry stays where it is). Generated code names
 // the position with the key (`ud.at("n", 0)`), so an access is one comparison of the key with
-// the declared one and a copy, without a search, a lookup in the remapping or the store.
+// the declared one, without a search, a lookup in the remapping or the store. The core states
+// know their keys' positions and read and write by position alone (findInput, setOutput).
 #pragma once
 
 #include <concepts>
@@ -91,11 +93,16 @@ class UserDataStore {
   Value* entryOf(std::string_view key);
   /// set(key, value), returning the entry.
   Value& assign(std::string_view key, Value&& value);
-  /// A copy of / an assignment to an entry, under the lock when the store is shared.
+  /// A copy of / an assignment to an entry, under the lock when the store is shared;
+  /// copy() always locks.
   Value load(const Value& entry) const {
     if (!shared_) return entry;
     std::lock_guard lock(mutex_);
     return entry;
+  }
+  void copy(const Value& entry, Value& out) const {
+    std::lock_guard lock(mutex_);
+    out = entry;
   }
   void store(Value& entry, Value&& value) {
     if (!shared_) {
@@ -134,9 +141,13 @@ class UserData {
 
   /// The same for a key at `position` in inputKeys() (at, find) or outputKeys() (set): what
   /// generated code and the core states call. When the key is not there, it is searched for.
-  Value at(std::string_view key, std::size_t position) const {
-    if (const Value* entry = known(inputs_, key, position)) return store_->load(*entry);
-    return atFirst(key, position);
+  /// at() returns the entry itself when the store is not shared (valid until the key is
+  /// written), else a copy the view keeps for the key (valid until the view reads it again).
+  const Value& at(std::string_view key, std::size_t position) const {
+    // The rest out of line, so that this inlines where it is called.
+    const Value* entry = known(inputs_, key, position);
+    if (entry == nullptr) return atOther(key, position);
+    return store_->shared_ ? sharedCopy(position) : *entry;
   }
   std::optional<Value> find(std::string_view key, std::size_t position) const {
     if (const Value* entry = known(inputs_, key, position)) return store_->load(*entry);
@@ -146,6 +157,36 @@ class UserData {
     Value* entry = known(outputs_, key, position);
     if (entry == nullptr || tracking_) return setFirst(key, position, std::move(value));
     store_->store(*entry, std::move(value));
+  }
+
+  /// The input key at `position` in inputKeys(), or null when it is not set: what a state
+  /// that knows its keys' positions reads (as at(), a copy the view keeps when shared).
+  /// Throws UserDataError when there is no input key at `position`.
+  const Value* findInput(std::size_t position) const {
+    if (position < inputs_.size()) {
+      Slot& slot = inputs_[position];
+      if (slot.entry != nullptr) return &read(slot, *slot.entry);
+    }
+    return findInputFirst(position);
+  }
+  /// Writes the output key at `position` in outputKeys().
+  void setOutput(std::size_t position, Value&& value) {
+    if (position < outputs_.size()) {
+      Slot& slot = outputs_[position];
+      if (slot.entry != nullptr && !tracking_) return store_->store(*slot.entry, std::move(value));
+    }
+    setOutputFirst(position, std::move(value));
+  }
+  /// The same with a value the caller keeps: an entry that already holds it is not written.
+  void setOutput(std::size_t position, const Value& value) {
+    if (position < outputs_.size() && !store_->shared_) {
+      Slot& slot = outputs_[position];
+      if (slot.entry != nullptr && !tracking_) {
+        if (!slot.entry->identical(value)) *slot.entry = value;
+        return;
+      }
+    }
+    setOutputFirst(position, Value(value));
   }
 
   const State& state() const { return *state_; }
@@ -168,23 +209,41 @@ class UserData {
     std::string target;      ///< the store's: remap(key)
     Value* entry = nullptr;  ///< the store's entry, once the key is set
     bool resolved = false;   ///< key and target are set
+    Value copy;              ///< the last value read from a shared store
   };
 
   /// The entry of the declared key `key` at `position` once resolved and set; else null.
   static Value* known(const std::vector<Slot>& slots, std::string_view key, std::size_t position) {
     if (position >= slots.size()) return nullptr;
     const Slot& slot = slots[position];
-    return slot.entry != nullptr && slot.key == key ? slot.entry : nullptr;
+    // Sized by `key`, which generated code writes as a literal: no call to memcmp.
+    bool same = slot.key.size() == key.size() &&
+                std::char_traits<char>::compare(slot.key.data(), key.data(), key.size()) == 0;
+    return slot.entry != nullptr && same ? slot.entry : nullptr;
   }
-  /// at(), find() and set() when known() does not know the key: a search, a check, a lookup.
-  Value atFirst(std::string_view key, std::size_t position) const;
+  /// What a read by position gives: `entry` itself, or from a shared store the slot's copy.
+  const Value& read(Slot& slot, const Value& entry) const {
+    if (!store_->shared_) return entry;
+    store_->copy(entry, slot.copy);
+    return slot.copy;
+  }
+  /// at() of a key known() does not know: a search, a check, a lookup.
+  const Value& atOther(std::string_view key, std::size_t position) const;
+  /// read() of the known input slot at `position`, from a shared store.
+  const Value& sharedCopy(std::size_t position) const;
+  /// find() and set() when known() does not know the key: a search, a check, a lookup.
   std::optional<Value> findFirst(std::string_view key, std::size_t position) const;
   void setFirst(std::string_view key, std::size_t position, Value value);
+  const Value* findInputFirst(std::size_t position) const;
+  void setOutputFirst(std::size_t position, Value&& value);
+  /// The entry of a resolved input slot, found in the store when not yet known; or null.
+  Value* entryOf(Slot& slot) const;
   Slot& inputSlot(std::string_view key, std::size_t position) const;
   Slot& outputSlot(std::string_view key, std::size_t position) const;
   Slot& slotAt(std::vector<Slot>& slots, std::size_t count, std::size_t position,
                std::string_view key) const;
   [[noreturn]] void undeclared(std::string_view key, bool write) const;
+  [[noreturn]] void undeclaredPosition(std::size_t position, bool write) const;
   std::string typeMessage(std::string_view key, const TypeError& e) const;
 
   UserDataStore* store_;

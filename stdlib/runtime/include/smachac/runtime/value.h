@@ -51,7 +51,12 @@ class Value {
   ValueType type() const { return static_cast<ValueType>(data_.index()); }
   bool isNull() const { return type() == ValueType::Null; }
   /// Python truthiness: false, 0, 0.0, "", [], {} and null are false.
-  bool truthy() const;
+  bool truthy() const {
+    if (const bool* b = std::get_if<bool>(&data_)) return *b;
+    return truthyOther();
+  }
+  /// The int held, or null when the value is not an int: the fast paths of rt::ops.
+  const int64_t* intIf() const { return std::get_if<int64_t>(&data_); }
 
   /// Checked conversion. Supported: bool, int, int64_t, double (also from an int), std::string,
   /// List, Map, Value, and std::vector of double, int64_t, std::string and std::vector<double>.
@@ -70,10 +75,14 @@ class Value {
   std::string repr() const;
 
   friend bool operator==(const Value& a, const Value& b);
+  /// The same type and value (1 and 1.0 differ; lists and maps: the same shared one).
+  bool identical(const Value& other) const;
 
  private:
   /// Throws TypeError: the value is not `expected` ("an int").
   [[noreturn]] void mismatch(const char* expected) const;
+  /// truthy() of anything but a bool.
+  bool truthyOther() const;
 
   std::variant<std::monostate, bool, int64_t, double, std::string, std::shared_ptr<const List>,
                std::shared_ptr<const Map>>

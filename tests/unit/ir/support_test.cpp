@@ -132,11 +132,12 @@ TEST_CASE("source lines at the edges: a line break's own offset, the end, empty 
   CHECK(sources.lineText(f, 5).empty());
   const std::pair<size_t, std::pair<uint32_t, uint32_t>> expected[] = {
       {0, {1, 1}}, {2, {1, 3}}, {3, {2, 1}}, {4, {3, 1}}, {5, {3, 2}}, {6, {4, 1}}, {99, {4, 1}}};
-  for (const auto& [offset, line_column] : expected) {
+  for (const auto& offset_line_column : expected) {
+    const size_t offset = offset_line_column.first;  // not a binding: INFO captures it
     INFO("offset " << offset);
     smachac::SourceLoc loc = sources.locOf(f, offset, 2);
-    CHECK(loc.line == line_column.first);
-    CHECK(loc.column == line_column.second);
+    CHECK(loc.line == offset_line_column.second.first);
+    CHECK(loc.column == offset_line_column.second.second);
     CHECK(loc.length == 2);
   }
   uint32_t empty = sources.addFile("empty.yml", "");

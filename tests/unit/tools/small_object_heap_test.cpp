@@ -16,6 +16,10 @@
 
 #include "tools/smachac/small_object_heap.h"
 
+// The sized form, declared for compilers that leave it out without -fsized-deallocation (clang
+// 14); small_object_heap.cpp defines it.
+void operator delete(void* block, std::size_t bytes) noexcept;
+
 namespace smachac::driver {
 namespace {
 

@@ -30,6 +30,26 @@ class Unavailable(Exception):
     """The ROS set-up a test needs is absent here; the message says why (the test skips)."""
 
 
+# What rosmaster writes when another process holds its port (it keeps running regardless):
+# the traceback of its XML-RPC thread on standard error ("Address already in use"), then, on
+# its buffered standard output, "port N is already in use".
+PORT_IN_USE = "already in use"
+
+
+class _TimeoutTransport(xmlrpc.client.Transport):
+    """XML-RPC over HTTP with a socket timeout: a port's holder that accepts and never
+    answers must not stall the check."""
+
+    def __init__(self, seconds):
+        super().__init__()
+        self.seconds = seconds
+
+    def make_connection(self, host):
+        connection = super().make_connection(host)
+        connection.timeout = self.seconds
+        return connection
+
+
 def free_port():
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -107,22 +127,44 @@ class RosSession:
     def add_package_path(self, folder):
         self.env["ROS_PACKAGE_PATH"] = folder + os.pathsep + self.env["ROS_PACKAGE_PATH"]
 
-    def start_master(self):
-        port = free_port()
+    def start_master(self, attempts=3):
+        """Starts the master on a free port. The port is free when chosen but not reserved:
+        another process may bind it before rosmaster does. rosmaster then keeps running
+        without its XML-RPC server, and whatever holds the port would answer in its place;
+        such a start is stopped and retried on another port."""
+        for attempt in range(1, attempts + 1):
+            log = os.path.join(self.work_dir, "rosmaster-%d.log" % attempt)
+            master = self._try_master(free_port(), log)
+            if master is not None:
+                return master
+        raise RuntimeError("rosmaster lost its port at each of %d starts; the last said:\n%s"
+                           % (attempts, read(log)))
+
+    def _try_master(self, port, log):
+        """The master's proxy once it answers as our rosmaster (by its pid), or None when it
+        could not bind the port (it said so, or exited)."""
         self.master_uri = "http://127.0.0.1:%d" % port
         self.env["ROS_MASTER_URI"] = self.master_uri
-        log = os.path.join(self.work_dir, "rosmaster.log")
         process = self.processes.start(["rosmaster", "--core", "-p", str(port)], self.env, log)
-        master = xmlrpc.client.ServerProxy(self.master_uri)
+        probe = xmlrpc.client.ServerProxy(self.master_uri, transport=_TimeoutTransport(2.0))
 
-        def set_run_id():
+        def state():
+            if process.poll() is not None or PORT_IN_USE in read(log):
+                return "lost"
             try:
-                return master.setParam("/smachac_test", "/run_id", str(uuid.uuid4()))[0] == 1
-            except OSError:
-                return process.poll() is not None  # died: stop waiting, reported below
+                return "ours" if probe.getPid("/smachac_test")[2] == process.pid else "waiting"
+            except (OSError, xmlrpc.client.Error):
+                return "waiting"
 
-        if not wait_for(set_run_id, 15) or process.poll() is not None:
-            raise RuntimeError("rosmaster did not start:\n" + read(log))
+        wait_for(lambda: state() != "waiting", 15)
+        outcome = state()
+        if outcome == "lost":
+            self.processes.stop(process)
+            return None
+        if outcome != "ours":
+            raise RuntimeError("rosmaster did not answer in 15 s:\n" + read(log))
+        master = xmlrpc.client.ServerProxy(self.master_uri)
+        master.setParam("/smachac_test", "/run_id", str(uuid.uuid4()))
         return master
 
     def start_fixture(self, name, argv, timeout=20):

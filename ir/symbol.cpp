@@ -30,9 +30,9 @@ uint64_t hashText(std::string_view text) {
 /// system when the IR is freed. `slots` is a power-of-two table of them, at most half full.
 class SymbolPool {
  public:
-  const std::string* intern(std::string_view text) {
+  const std::string* intern(std::string_view text, uint64_t hash) {
     std::lock_guard<std::mutex> lock(mutex_);
-    size_t slot = find(text, hashText(text));
+    size_t slot = find(text, hash);
     if (slots_[slot]) return slots_[slot];
     const std::string* kept = &texts_.emplace_back(text);
     slots_[slot] = kept;
@@ -60,6 +60,11 @@ class SymbolPool {
   std::vector<const std::string*> slots_ = std::vector<const std::string*>(1024);
 };
 
+/// Each thread remembers the last text interned in each of kRecentSlots slots (by hash): most
+/// names recur (outcomes, keys, templates, the next state's name), and a hit there takes no
+/// lock and no probe. The pool never frees a text, so a remembered one stays valid.
+constexpr size_t kRecentSlots = 256;
+
 /// Never destroyed: symbols held by other objects of static storage outlive every destructor.
 SymbolPool& pool() {
   static SymbolPool* const kPool = new SymbolPool;
@@ -71,7 +76,12 @@ SymbolPool& pool() {
 Symbol::Symbol() : text_(&emptyText()) {}
 
 const std::string* Symbol::intern(std::string_view text) {
-  return text.empty() ? &emptyText() : pool().intern(text);
+  if (text.empty()) return &emptyText();
+  thread_local const std::string* recent[kRecentSlots] = {};
+  uint64_t hash = hashText(text);
+  const std::string*& remembered = recent[hash % kRecentSlots];
+  if (!remembered || *remembered != text) remembered = pool().intern(text, hash);
+  return remembered;
 }
 
 }  // namespace smachac::ir

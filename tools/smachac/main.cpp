@@ -6,6 +6,7 @@
 
 #include "tools/smachac/args.h"
 #include "tools/smachac/commands.h"
+#include "tools/smachac/huge_pages.h"
 #include "tools/smachac/large_stack.h"
 #include "tools/smachac/process_exit.h"
 #include "tools/smachac/small_object_heap.h"
@@ -53,7 +54,7 @@ int main(int argc, char** argv) {
   // such blocks are freed): a big script's code buffers and output then grow and shrink
   // without leaving freed pages inside the heap. The 100,000-state compile peaks at 123 MB
   // instead of 145 (256 KiB: the same peak, 18% more page faults).
-  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+  mallopt(M_MMAP_THRESHOLD, static_cast<int>(smachac::driver::kMappedBlockBytes));
   // Every command but the language server (whose threads share documents) runs on one thread.
   if (argc < 2 || std::string_view(argv[1]) != "lsp") smachac::driver::enableSmallObjectHeap();
   Job job{smachac::driver::normalizeArgs(Args(argv + 1, argv + argc))};

@@ -10,6 +10,7 @@
 #include "frontend/yaml_loader.h"
 #include "ir/printer.h"
 #include "passes/pipeline.h"
+#include "tools/smachac/huge_pages.h"
 
 namespace smachac::driver {
 namespace {
@@ -84,6 +85,7 @@ std::optional<ir::Module> Session::compile(const std::string& path) {
   check.optimize = options_.optimize;
   check.sub_script_alone = options_.sub_script_alone;
   if (path != kStandardInputPath) {
+    preferHugePagesFor(path);
     return checker::checkScript(path, std::nullopt, check, sources_, *diags_).module;
   }
   std::optional<std::string> text = readStandardInput(*diags_);

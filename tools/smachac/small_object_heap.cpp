@@ -8,6 +8,8 @@
 // runs for it.
 #include "tools/smachac/small_object_heap.h"
 
+#include "tools/smachac/huge_pages.h"
+
 #ifndef SMACHAC_SANITIZED
 #include <sys/mman.h>
 
@@ -99,10 +101,14 @@ void* takeBlock(std::size_t size_class) {
 }
 
 /// What the standard operator new does: malloc, calling the new-handler until it succeeds.
+/// A block with a mapping of its own may get huge pages (huge_pages.h).
 void* allocateLarge(std::size_t bytes) {
   if (bytes == 0) bytes = 1;
   while (true) {
-    if (void* block = std::malloc(bytes)) return block;
+    if (void* block = std::malloc(bytes)) {
+      if (bytes >= kMappedBlockBytes) adviseHugePages(block, bytes);
+      return block;
+    }
     std::new_handler handler = std::get_new_handler();
     if (!handler) throw std::bad_alloc();
     handler();

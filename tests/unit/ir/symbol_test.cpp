@@ -53,6 +53,21 @@ TEST_CASE("threads interning the same names get the same symbols") {
   CHECK(std::count(seen.begin(), seen.end(), seen[0]) == 4);
 }
 
+TEST_CASE("texts sharing a thread's recent slots still intern to their own symbols") {
+  // Far more texts than the recent slots, each interned again after all the others pushed it
+  // out, and again at once: the same symbol every time, with its own text.
+  std::vector<std::string> texts;
+  for (int i = 0; i < 2000; ++i) texts.push_back(fmt::format("recent_{}", i));
+  std::vector<Symbol> first(texts.begin(), texts.end());
+  for (size_t i = 0; i < texts.size(); ++i) {
+    Symbol again(texts[i]);
+    Symbol at_once(texts[i]);
+    CHECK(again == first[i]);
+    CHECK(at_once.data() == first[i].data());
+    CHECK(again.str() == texts[i]);
+  }
+}
+
 TEST_CASE("a boxed value copies deeply and tests like an optional") {
   Boxed<std::string> none;
   CHECK_FALSE(none);

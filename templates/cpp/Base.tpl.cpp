@@ -103,10 +103,10 @@ int {{ main_function }}(int argc, char** argv) {
 {%- endblock main_def %}
 {%- block body %}
 {%- if cpp_library %}
-  auto {{ sm_name }}_owner = std::make_unique<rt::StateMachine>(rt::StateMachineSpec{{ '{' }}{{ render_outcomes(outcomes) }}{{ '}' }});
+  auto {{ sm_name }}_owner = std::make_unique<rt::StateMachine>(rt::CStringSpec{{ '{' }}{{ render_outcomes(outcomes) }}{{ '}' }});
   rt::StateMachine& {{ sm_name }} = *{{ sm_name }}_owner;
 {%- else %}
-  rt::StateMachine {{ sm_name }}(rt::StateMachineSpec{{ '{' }}{{ render_outcomes(outcomes) }}{{ '}' }});
+  rt::StateMachine {{ sm_name }}(rt::CStringSpec{{ '{' }}{{ render_outcomes(outcomes) }}{{ '}' }});
 {%- endif %}
 {%- if name in header and header[name] | trim %}
   {{ header[name] | trim | indent(2) }}

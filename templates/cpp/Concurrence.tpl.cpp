@@ -59,7 +59,7 @@ outcomes: []
 {%- if input_keys is defined %}{% do fields.append(render_input_keys(input_keys)) %}{% endif %}
 {%- if output_keys is defined %}{% do fields.append(render_output_keys(output_keys)) %}{% endif %}
 {%- do fields.append('.early_exit = false') %}
-{{ render_container_contents(name, sm_name, 'rt::Concurrence', 'rt::ConcurrenceSpec{' + fields | join(', ') + '}', parent_sm_name, parent_type, header, userdata, header_userdata, body, transitions, remapping) }}
+{{ render_container_contents(name, sm_name, 'rt::Concurrence', 'rt::CStringConcurrenceSpec{' + fields | join(', ') + '}', parent_sm_name, parent_type, header, userdata, header_userdata, body, transitions, remapping) }}
 {%- if include_comments %}
 // END: {{ name | cppcomment }}
 {%- endif %}

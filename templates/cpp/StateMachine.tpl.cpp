@@ -49,7 +49,7 @@ outcomes: []
 {%- set fields = [render_outcomes(outcomes)] %}
 {%- if input_keys is defined %}{% do fields.append(render_input_keys(input_keys)) %}{% endif %}
 {%- if output_keys is defined %}{% do fields.append(render_output_keys(output_keys)) %}{% endif %}
-{{ render_container_contents(name, sm_name, 'rt::StateMachine', 'rt::StateMachineSpec{' + fields | join(', ') + '}', parent_sm_name, parent_type, header, userdata, header_userdata, body, transitions, remapping) }}
+{{ render_container_contents(name, sm_name, 'rt::StateMachine', 'rt::CStringSpec{' + fields | join(', ') + '}', parent_sm_name, parent_type, header, userdata, header_userdata, body, transitions, remapping) }}
 {%- if include_comments %}
 // END: {{ name | cppcomment }}
 {%- endif %}

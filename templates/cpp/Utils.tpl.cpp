@@ -53,16 +53,16 @@ outcomes: []
 .output_keys = {{ render_list(output_keys) }}
 {%- endmacro %}
 
-{# `rt::SpecLiteral{.outcomes = ..., .input_keys = ..., .output_keys = ...}`, each field when
+{# `rt::CStringSpec{.outcomes = ..., .input_keys = ..., .output_keys = ...}`, each field when
    the state gives it (designated initializers, in declaration order). The literal form of
-   rt::StateSpec, which it converts to: nothing to destroy, so that a program of thousands of
-   states compiles fast. #}
+   rt::StateSpec, which it converts to: string literals, nothing to construct or destroy, so
+   that a program of thousands of states compiles fast. #}
 {% macro render_spec(outcomes, input_keys, output_keys) -%}
 {% set fields = [] -%}
 {% if outcomes is defined %}{% do fields.append(render_outcomes(outcomes)) %}{% endif -%}
 {% if input_keys is defined %}{% do fields.append(render_input_keys(input_keys)) %}{% endif -%}
 {% if output_keys is defined %}{% do fields.append(render_output_keys(output_keys)) %}{% endif -%}
-rt::SpecLiteral{{ '{' }}{{ fields | join(', ') }}{{ '}' }}
+rt::CStringSpec{{ '{' }}{{ fields | join(', ') }}{{ '}' }}
 {%- endmacro %}
 
 {# One callback: a backtick expression is a C++ callable taking `rt::UserData&` and
@@ -72,9 +72,11 @@ rt::SpecLiteral{{ '{' }}{{ fields | join(', ') }}{{ '}' }}
 {%- else %}{{ callback | string }}{% endif %}
 {%- endmacro %}
 
-{# `rt::Callbacks{{"key", callback}, ...}` for a state's constructor. #}
+{# `rt::CallbacksLiteral{{"key", callback}, ...}` for a state's constructor: the literal form
+   of rt::Callbacks, which it converts to (nothing to destroy; a lambda without captures is
+   kept as a function pointer). #}
 {% macro render_callbacks(state_name, state_uuid, callbacks) -%}
-rt::Callbacks{{ '{' }}
+rt::CallbacksLiteral{{ '{' }}
 {%- for output_key, callback in callbacks.items() -%}
 {{ '{' }}{{ output_key | cppstr }}, {{ render_callback(callback) }}{{ '}' }}{% if not loop.last %}, {% endif %}
 {%- endfor %}{{ '}' }}
@@ -126,22 +128,20 @@ rt::Remapping{{ '{' }}
 {%- endfor %}{{ '}' }}
 {%- endmacro %}
 
-{# What follows the state in `add(...)`: transitions (not in a Concurrence), remapping, as
-   literals (`{{"succeeded", "NEXT"}}`). #}
+{# What `emplace` takes after the label: transitions (not in a Concurrence) and remapping, as
+   literals (`{{"succeeded", "NEXT"}}, {}`). #}
 {% macro render_add_tail(parent_type, transitions, remapping) -%}
-{% if parent_type != 'Concurrence' and (transitions is defined or remapping is defined) -%}
-,
-    {{ render_pairs(transitions if transitions is defined else {}) }}
-{%- endif %}
-{%- if remapping is defined %},
-    {{ render_pairs(remapping) }}
-{%- endif %}
+{% if parent_type != 'Concurrence' -%}
+{{ render_pairs(transitions if transitions is defined else {}) }}, {% endif -%}
+{{ render_pairs(remapping if remapping is defined else {}) }}
 {%- endmacro %}
 
-{# `<parent>.add("NAME", std::make_unique<Class>(arguments), transitions, remapping);` #}
+{# `<parent>.emplace<Class>("NAME", transitions, remapping, arguments);`: the state is made
+   from `arguments` inside the library's template (StateMachine::emplace), so that each
+   statement compiles to the call alone. #}
 {% macro render_add_state(parent_sm_name, parent_type, name, class_name, arguments, transitions, remapping) -%}
-{{ parent_sm_name }}.add({{ name | cppstr }},
-    std::make_unique<{{ class_name }}>({{ arguments }}){{ render_add_tail(parent_type, transitions, remapping) }});
+{{ parent_sm_name }}.emplace<{{ class_name }}>({{ name | cppstr }}, {{ render_add_tail(parent_type, transitions, remapping) }},
+    {{ arguments }});
 {%- endmacro %}
 
 {# A container after its spec: added to its parent inside its own C++ scope (its variable is
@@ -152,8 +152,8 @@ rt::Remapping{{ '{' }}
    than its size (a 1,000-state machine builds about 5x faster at -O2). #}
 {% macro render_container_contents(name, sm_name, class_name, spec, parent_sm_name, parent_type, header, userdata, header_userdata, body, transitions, remapping) -%}
 [&] {
-  [[maybe_unused]] auto& {{ sm_name }} = {{ parent_sm_name }}.add({{ name | cppstr }},
-      std::make_unique<{{ class_name }}>({{ spec }}){{ render_add_tail(parent_type, transitions, remapping) | indent(2) }});
+  [[maybe_unused]] auto& {{ sm_name }} = {{ parent_sm_name }}.emplace<{{ class_name }}>({{ name | cppstr }}, {{ render_add_tail(parent_type, transitions, remapping) }},
+      {{ spec }});
 {%- if name in header and header[name] | trim %}
   {{ header[name] | trim | indent(2) }}
 {%- endif %}

@@ -36,6 +36,25 @@ struct Concurrence::Run {
   bool active = false;
 };
 
+CStringConcurrenceSpec::operator ConcurrenceSpec() const {
+  // Through StateSpec's conversion: the keys' C strings read the same way.
+  StateSpec keys =
+      CStringSpec{.outcomes = outcomes, .input_keys = input_keys, .output_keys = output_keys};
+  ConcurrenceSpec spec{.outcomes = std::move(keys.outcomes),
+                       .default_outcome = default_outcome != nullptr ? default_outcome : "",
+                       .outcome_map = {},
+                       .input_keys = std::move(keys.input_keys),
+                       .output_keys = std::move(keys.output_keys),
+                       .early_exit = early_exit};
+  for (const Entry& entry : outcome_map) {
+    // The first of equal outcomes wins, as in OutcomeMap's initializer list.
+    auto children = cStringMap(entry.children);
+    spec.outcome_map.try_emplace(entry.outcome != nullptr ? entry.outcome : "", children.begin(),
+                                 children.end());
+  }
+  return spec;
+}
+
 Concurrence::Concurrence(ConcurrenceSpec spec)
     : Container({.outcomes = std::move(spec.outcomes),
                  .input_keys = std::move(spec.input_keys),
@@ -56,6 +75,11 @@ void Concurrence::addState(std::string label, std::unique_ptr<State> state, Rema
 void Concurrence::addState(std::string_view label, std::unique_ptr<State> state,
                            PairsLiteral remapping) {
   addChild(std::string(label), std::move(state), toMap(remapping));
+}
+
+void Concurrence::addState(const char* label, std::unique_ptr<State> state,
+                           CStringPairs remapping) {
+  addChild(std::string(label != nullptr ? label : ""), std::move(state), cStringMap(remapping));
 }
 
 // --- checks ----------------------------------------------------------------------------------

@@ -2,27 +2,54 @@
 #include "smachac/runtime/literals.h"
 
 #include "smachac/runtime/state.h"
+#include "smachac/runtime/state_machine.h"
 
 namespace smachac::runtime {
 
 namespace {
 
-Keys keysOf(std::initializer_list<std::string_view> literal) {
-  return Keys(literal.begin(), literal.end());
+// A null C string (from hand-written code) reads as "", not as undefined behaviour.
+std::string_view textOf(std::string_view text) { return text; }
+std::string_view textOf(const char* text) { return text != nullptr ? text : ""; }
+
+template <class Key>
+Keys keysOf(std::initializer_list<Key> literal) {
+  Keys keys;
+  keys.reserve(literal.size());
+  for (const Key& key : literal) keys.emplace_back(textOf(key));
+  return keys;
+}
+
+template <class Pairs>
+std::map<std::string, std::string, std::less<>> mapOf(Pairs pairs) {
+  std::map<std::string, std::string, std::less<>> map;
+  for (const auto& pair : pairs) map.emplace(textOf(pair.first), textOf(pair.second));
+  return map;
+}
+
+template <class Spec>
+StateSpec specOf(const Spec& spec) {
+  return StateSpec{.outcomes = keysOf(spec.outcomes),
+                   .input_keys = keysOf(spec.input_keys),
+                   .output_keys = keysOf(spec.output_keys)};
 }
 
 }  // namespace
 
-std::map<std::string, std::string, std::less<>> toMap(PairsLiteral pairs) {
-  std::map<std::string, std::string, std::less<>> map;
-  for (const PairLiteral& pair : pairs) map.emplace(pair.first, pair.second);
-  return map;
+std::map<std::string, std::string, std::less<>> toMap(PairsLiteral pairs) { return mapOf(pairs); }
+
+std::map<std::string, std::string, std::less<>> cStringMap(CStringPairs pairs) {
+  return mapOf(pairs);
 }
 
-SpecLiteral::operator StateSpec() const {
-  return StateSpec{.outcomes = keysOf(outcomes),
-                   .input_keys = keysOf(input_keys),
-                   .output_keys = keysOf(output_keys)};
+SpecLiteral::operator StateSpec() const { return specOf(*this); }
+
+CStringSpec::operator StateSpec() const { return specOf(*this); }
+
+CStringSpec::operator StateMachineSpec() const {
+  return StateMachineSpec{.outcomes = keysOf(outcomes),
+                          .input_keys = keysOf(input_keys),
+                          .output_keys = keysOf(output_keys)};
 }
 
 }  // namespace smachac::runtime

@@ -44,6 +44,12 @@ void StateMachine::addState(std::string_view label, std::unique_ptr<State> state
   addState(std::string(label), std::move(state), toMap(transitions), toMap(remapping));
 }
 
+void StateMachine::addState(const char* label, std::unique_ptr<State> state,
+                            CStringPairs transitions, CStringPairs remapping) {
+  addState(std::string(label != nullptr ? label : ""), std::move(state), cStringMap(transitions),
+           cStringMap(remapping));
+}
+
 void StateMachine::collectOwnProblems(std::vector<std::string>& problems) {
   steps_.clear();
   for (Child& child : children()) steps_.push_back({.child = &child, .targets = {}});

@@ -12,12 +12,11 @@ namespace rt = smachac::runtime;
 using rt::ConditionalOutcomeState;
 
 int main(int argc, char** argv) {
-  rt::StateMachine conditional(rt::StateMachineSpec{.outcomes = {"small", "large", "unknown"}});
+  rt::StateMachine conditional(rt::CStringSpec{.outcomes = {"small", "large", "unknown"}});
   conditional.userdata().set("size", int64_t{7});
 
-  conditional.add("CHECK",
-      std::make_unique<ConditionalOutcomeState>(rt::SpecLiteral{.outcomes = {"is_small", "is_large", "default"}, .input_keys = {"size"}}, rt::Callbacks{{"is_small", [](rt::UserData& ud) { return ud.get<int64_t>("size") < 5; }}, {"is_large", [](rt::UserData& ud) { return ud.get<int64_t>("size") >= 5; }}}),
-      {{"default", "unknown"}, {"is_large", "large"}, {"is_small", "small"}});
+  conditional.emplace<ConditionalOutcomeState>("CHECK", {{"default", "unknown"}, {"is_large", "large"}, {"is_small", "small"}}, {},
+      rt::CStringSpec{.outcomes = {"is_small", "is_large", "default"}, .input_keys = {"size"}}, rt::CallbacksLiteral{{"is_small", [](rt::UserData& ud) { return ud.get<int64_t>("size") < 5; }}, {"is_large", [](rt::UserData& ud) { return ud.get<int64_t>("size") >= 5; }}});
 
   int exit_code = rt::runMain(conditional, argc, argv);
   return exit_code;

@@ -16,22 +16,19 @@ using rt::RandomOutcomeState;
 using rt::ConditionalOutcomeState;
 
 int main(int argc, char** argv) {
-  rt::StateMachine expr_callbacks(rt::StateMachineSpec{.outcomes = {"done", "failed"}});
+  rt::StateMachine expr_callbacks(rt::CStringSpec{.outcomes = {"done", "failed"}});
   expr_callbacks.userdata().set("count", int64_t{0});
   expr_callbacks.userdata().set("name", "robot");
   expr_callbacks.userdata().set("sizes", rt::List{rt::Value(double{0.5}), rt::Value(int64_t{2}), rt::Value(double{1.25})});
 
-  expr_callbacks.add("UPDATE",
-      std::make_unique<CallbacksState>(rt::SpecLiteral{.input_keys = {"count", "name", "sizes"}, .output_keys = {"count", "label", "ratio", "smallest"}}, rt::Callbacks{{"count", [](rt::UserData& ud) -> rt::Value { return rt::ops::subtract(rt::ops::add(ud.at("count", 0), rt::ops::multiply(rt::Value(int64_t{3}), rt::Value(int64_t{2}))), rt::Value(int64_t{1})); }}, {"label", [](rt::UserData& ud) -> rt::Value { return ((rt::Value(rt::ops::greater(rt::ops::len(ud.at("name", 1)), rt::Value(int64_t{3})))).truthy() ? rt::ops::add(ud.at("name", 1), rt::Value(std::string("-1"))) : rt::Value(std::string("anonymous"))); }}, {"ratio", [](rt::UserData& ud) -> rt::Value { return rt::ops::divide(rt::ops::modulo(rt::ops::floorDivide(rt::ops::negate(rt::ops::add(ud.at("count", 0), rt::Value(int64_t{7}))), rt::Value(int64_t{2})), rt::Value(int64_t{3})), rt::Value(int64_t{4})); }}, {"smallest", [](rt::UserData& ud) -> rt::Value { return rt::ops::logicalOr(rt::ops::min({ud.at("sizes", 2)}), [&] { return rt::ops::abs(rt::ops::negate(rt::Value(double{1.5}))); }); }}}),
-      {{"succeeded", "DRAW"}});
+  expr_callbacks.emplace<CallbacksState>("UPDATE", {{"succeeded", "DRAW"}}, {},
+      rt::CStringSpec{.input_keys = {"count", "name", "sizes"}, .output_keys = {"count", "label", "ratio", "smallest"}}, rt::CallbacksLiteral{{"count", [](rt::UserData& ud) -> rt::Value { return rt::ops::subtract(rt::ops::add(ud.at("count", 0), rt::ops::multiply(rt::Value(int64_t{3}), rt::Value(int64_t{2}))), rt::Value(int64_t{1})); }}, {"label", [](rt::UserData& ud) -> rt::Value { return ((rt::Value(rt::ops::greater(rt::ops::len(ud.at("name", 1)), rt::Value(int64_t{3})))).truthy() ? rt::ops::add(ud.at("name", 1), rt::Value(std::string("-1"))) : rt::Value(std::string("anonymous"))); }}, {"ratio", [](rt::UserData& ud) -> rt::Value { return rt::ops::divide(rt::ops::modulo(rt::ops::floorDivide(rt::ops::negate(rt::ops::add(ud.at("count", 0), rt::Value(int64_t{7}))), rt::Value(int64_t{2})), rt::Value(int64_t{3})), rt::Value(int64_t{4})); }}, {"smallest", [](rt::UserData& ud) -> rt::Value { return rt::ops::logicalOr(rt::ops::min({ud.at("sizes", 2)}), [&] { return rt::ops::abs(rt::ops::negate(rt::Value(double{1.5}))); }); }}});
 
-  expr_callbacks.add("DRAW",
-      std::make_unique<RandomOutcomeState>(rt::SpecLiteral{.outcomes = {"drawn"}, .input_keys = {"count"}}, rt::Callbacks{{"count", [](rt::UserData& ud) -> rt::Value { return rt::ops::max({ud.at("count", 0), rt::Value(int64_t{10})}); }}}),
-      {{"drawn", "CHECK"}});
+  expr_callbacks.emplace<RandomOutcomeState>("DRAW", {{"drawn", "CHECK"}}, {},
+      rt::CStringSpec{.outcomes = {"drawn"}, .input_keys = {"count"}}, rt::CallbacksLiteral{{"count", [](rt::UserData& ud) -> rt::Value { return rt::ops::max({ud.at("count", 0), rt::Value(int64_t{10})}); }}});
 
-  expr_callbacks.add("CHECK",
-      std::make_unique<ConditionalOutcomeState>(rt::SpecLiteral{.outcomes = {"reached", "default"}, .input_keys = {"count", "label"}}, rt::Callbacks{{"reached", [](rt::UserData& ud) -> rt::Value { return rt::ops::logicalAnd(rt::Value(rt::ops::greaterEqual(ud.at("count", 0), rt::Value(int64_t{10}))), [&] { return rt::Value(!(rt::Value(rt::ops::equal(ud.at("label", 1), rt::Value(std::string(""))))).truthy()); }); }}}),
-      {{"default", "failed"}, {"reached", "done"}});
+  expr_callbacks.emplace<ConditionalOutcomeState>("CHECK", {{"default", "failed"}, {"reached", "done"}}, {},
+      rt::CStringSpec{.outcomes = {"reached", "default"}, .input_keys = {"count", "label"}}, rt::CallbacksLiteral{{"reached", [](rt::UserData& ud) -> rt::Value { return rt::ops::logicalAnd(rt::Value(rt::ops::greaterEqual(ud.at("count", 0), rt::Value(int64_t{10}))), [&] { return rt::Value(!(rt::Value(rt::ops::equal(ud.at("label", 1), rt::Value(std::string(""))))).truthy()); }); }}});
 
   int exit_code = rt::runMain(expr_callbacks, argc, argv);
   return exit_code;

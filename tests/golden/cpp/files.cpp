@@ -14,20 +14,18 @@ using rt::WriteCSVFileState;
 using rt::DeleteFileState;
 
 int main(int argc, char** argv) {
-  rt::StateMachine files(rt::StateMachineSpec{.outcomes = {"done", "failed"}});
+  rt::StateMachine files(rt::CStringSpec{.outcomes = {"done", "failed"}});
   files.userdata().set("data_keys", rt::List{rt::Value(std::string("xs")), rt::Value(std::string("label"))});
   files.userdata().set("file", "/tmp/smachac_golden_cpp_files.csv");
   files.userdata().set("header", rt::List{rt::Value(std::string("x1")), rt::Value(std::string("x2")), rt::Value(std::string("label"))});
   files.userdata().set("label", "a;b");
   files.userdata().set("xs", rt::List{rt::Value(int64_t{1}), rt::Value(double{2.5})});
 
-  files.add("WRITE",
-      std::make_unique<WriteCSVFileState>(";", rt::SpecLiteral{.input_keys = {"file", "data_keys", "header", "xs", "label"}}),
-      {{"aborted", "failed"}, {"succeeded", "DELETE"}});
+  files.emplace<WriteCSVFileState>("WRITE", {{"aborted", "failed"}, {"succeeded", "DELETE"}}, {},
+      ";", rt::CStringSpec{.input_keys = {"file", "data_keys", "header", "xs", "label"}});
 
-  files.add("DELETE",
-      std::make_unique<DeleteFileState>(rt::SpecLiteral{.input_keys = {"file"}}),
-      {{"aborted", "failed"}, {"succeeded", "done"}});
+  files.emplace<DeleteFileState>("DELETE", {{"aborted", "failed"}, {"succeeded", "done"}}, {},
+      rt::CStringSpec{.input_keys = {"file"}});
 
   int exit_code = rt::runMain(files, argc, argv);
   return exit_code;

@@ -21,27 +21,23 @@ using rt::ConditionalOutcomeState;
 using rt::PrintUserdataState;
 
 std::unique_ptr<rt::StateMachine> build() {
-  auto counter_owner = std::make_unique<rt::StateMachine>(rt::StateMachineSpec{.outcomes = {"done", "aborted"}});
+  auto counter_owner = std::make_unique<rt::StateMachine>(rt::CStringSpec{.outcomes = {"done", "aborted"}});
   rt::StateMachine& counter = *counter_owner;
   counter.userdata().set("limit", int64_t{2});
   counter.userdata().set("n", int64_t{0});
 
-  counter.add("INC",
-      std::make_unique<CallbacksState>(rt::SpecLiteral{.input_keys = {"n"}, .output_keys = {"n"}}, rt::Callbacks{{"n", [](rt::UserData& ud) { return ud.get<int64_t>("n") + 1; }}}),
-      {{"succeeded", "CHECK"}});
+  counter.emplace<CallbacksState>("INC", {{"succeeded", "CHECK"}}, {},
+      rt::CStringSpec{.input_keys = {"n"}, .output_keys = {"n"}}, rt::CallbacksLiteral{{"n", [](rt::UserData& ud) { return ud.get<int64_t>("n") + 1; }}});
 
-  counter.add("CHECK",
-      std::make_unique<ConditionalOutcomeState>(rt::SpecLiteral{.outcomes = {"finished", "default"}, .input_keys = {"n", "limit"}}, rt::Callbacks{{"finished", [](rt::UserData& ud) { return ud.get<int64_t>("n") >= ud.get<int64_t>("limit"); }}}),
-      {{"default", "INC"}, {"finished", "REPORT"}});
+  counter.emplace<ConditionalOutcomeState>("CHECK", {{"default", "INC"}, {"finished", "REPORT"}}, {},
+      rt::CStringSpec{.outcomes = {"finished", "default"}, .input_keys = {"n", "limit"}}, rt::CallbacksLiteral{{"finished", [](rt::UserData& ud) { return ud.get<int64_t>("n") >= ud.get<int64_t>("limit"); }}});
 
   [&] {
-    [[maybe_unused]] auto& sm_report = counter.add("REPORT",
-        std::make_unique<rt::StateMachine>(rt::StateMachineSpec{.outcomes = {"shown"}, .input_keys = {"n"}}),
-        {{"shown", "done"}});
+    [[maybe_unused]] auto& sm_report = counter.emplace<rt::StateMachine>("REPORT", {{"shown", "done"}}, {},
+        rt::CStringSpec{.outcomes = {"shown"}, .input_keys = {"n"}});
 
-    sm_report.add("SHOW",
-        std::make_unique<PrintUserdataState>(rt::SpecLiteral{.input_keys = {"n"}}),
-        {{"succeeded", "shown"}});
+    sm_report.emplace<PrintUserdataState>("SHOW", {{"succeeded", "shown"}}, {},
+        rt::CStringSpec{.input_keys = {"n"}});
   }();
 
   return counter_owner;

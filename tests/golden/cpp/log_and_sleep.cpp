@@ -14,15 +14,13 @@ using rt::LogState;
 using rt::SleepState;
 
 int main(int argc, char** argv) {
-  rt::StateMachine log_and_sleep(rt::StateMachineSpec{.outcomes = {"finished", "stopped"}});
+  rt::StateMachine log_and_sleep(rt::CStringSpec{.outcomes = {"finished", "stopped"}});
 
-  log_and_sleep.add("SAY",
-      std::make_unique<LogState>("going to sleep", rt::SpecLiteral{}),
-      {{"done", "NAP"}});
+  log_and_sleep.emplace<LogState>("SAY", {{"done", "NAP"}}, {},
+      "going to sleep", rt::CStringSpec{});
 
-  log_and_sleep.add("NAP",
-      std::make_unique<SleepState>(double{0.2}, rt::SpecLiteral{.outcomes = {"succeeded", "preempted"}}),
-      {{"preempted", "stopped"}, {"succeeded", "finished"}});
+  log_and_sleep.emplace<SleepState>("NAP", {{"preempted", "stopped"}, {"succeeded", "finished"}}, {},
+      double{0.2}, rt::CStringSpec{.outcomes = {"succeeded", "preempted"}});
 
   int exit_code = rt::runMain(log_and_sleep, argc, argv);
   return exit_code;

@@ -17,35 +17,30 @@ using rt::SleepState;
 using rt::RandomOutcomeState;
 
 int main(int argc, char** argv) {
-  rt::StateMachine nested(rt::StateMachineSpec{.outcomes = {"succeeded", "aborted"}});
+  rt::StateMachine nested(rt::CStringSpec{.outcomes = {"succeeded", "aborted"}});
   nested.userdata().set("greeting", "hello");
 
   [&] {
-    [[maybe_unused]] auto& sm_sub = nested.add("SUB",
-        std::make_unique<rt::StateMachine>(rt::StateMachineSpec{.outcomes = {"done", "failed"}, .input_keys = {"text"}}),
-        {{"done", "succeeded"}, {"failed", "aborted"}},
-        {{"text", "greeting"}});
+    [[maybe_unused]] auto& sm_sub = nested.emplace<rt::StateMachine>("SUB", {{"done", "succeeded"}, {"failed", "aborted"}}, {{"text", "greeting"}},
+        rt::CStringSpec{.outcomes = {"done", "failed"}, .input_keys = {"text"}});
     sm_sub.userdata().set("count", int64_t{2});
 
-    sm_sub.add("SHOW",
-        std::make_unique<PrintUserdataState>(rt::SpecLiteral{.input_keys = {"text", "count"}}),
-        {{"succeeded", "PAR"}});
+    sm_sub.emplace<PrintUserdataState>("SHOW", {{"succeeded", "PAR"}}, {},
+        rt::CStringSpec{.input_keys = {"text", "count"}});
 
     [&] {
-      [[maybe_unused]] auto& sm_par = sm_sub.add("PAR",
-          std::make_unique<rt::Concurrence>(rt::ConcurrenceSpec{.outcomes = {"all_done", "some_failed"}, .default_outcome = "some_failed", .outcome_map = {{"all_done", {{"LEFT", "succeeded"}, {"RIGHT", "succeeded"}}}}, .early_exit = false}),
-          {{"all_done", "PICK"}, {"some_failed", "failed"}});
+      [[maybe_unused]] auto& sm_par = sm_sub.emplace<rt::Concurrence>("PAR", {{"all_done", "PICK"}, {"some_failed", "failed"}}, {},
+          rt::CStringConcurrenceSpec{.outcomes = {"all_done", "some_failed"}, .default_outcome = "some_failed", .outcome_map = {{"all_done", {{"LEFT", "succeeded"}, {"RIGHT", "succeeded"}}}}, .early_exit = false});
 
-      sm_par.add("LEFT",
-          std::make_unique<SleepState>(double{0.01}, rt::SpecLiteral{}));
+      sm_par.emplace<SleepState>("LEFT", {},
+          double{0.01}, rt::CStringSpec{});
 
-      sm_par.add("RIGHT",
-          std::make_unique<SleepState>(double{0.02}, rt::SpecLiteral{}));
+      sm_par.emplace<SleepState>("RIGHT", {},
+          double{0.02}, rt::CStringSpec{});
     }();
 
-    sm_sub.add("PICK",
-        std::make_unique<RandomOutcomeState>(rt::SpecLiteral{.outcomes = {"done", "again"}}),
-        {{"again", "SHOW"}});
+    sm_sub.emplace<RandomOutcomeState>("PICK", {{"again", "SHOW"}}, {},
+        rt::CStringSpec{.outcomes = {"done", "again"}});
   }();
 
   int exit_code = rt::runMain(nested, argc, argv);

@@ -16,21 +16,18 @@ using rt::ConditionalOutcomeState;
 using rt::PrintUserdataState;
 
 int main(int argc, char** argv) {
-  rt::StateMachine seq(rt::StateMachineSpec{.outcomes = {"done"}});
+  rt::StateMachine seq(rt::CStringSpec{.outcomes = {"done"}});
   seq.userdata().set("counter", int64_t{0});
   seq.userdata().set("limit", int64_t{3});
 
-  seq.add("INC",
-      std::make_unique<CallbacksState>(rt::SpecLiteral{.input_keys = {"counter"}, .output_keys = {"counter"}}, rt::Callbacks{{"counter", [](rt::UserData& ud) { return ud.get<int64_t>("counter") + 1; }}}),
-      {{"succeeded", "CHECK"}});
+  seq.emplace<CallbacksState>("INC", {{"succeeded", "CHECK"}}, {},
+      rt::CStringSpec{.input_keys = {"counter"}, .output_keys = {"counter"}}, rt::CallbacksLiteral{{"counter", [](rt::UserData& ud) { return ud.get<int64_t>("counter") + 1; }}});
 
-  seq.add("CHECK",
-      std::make_unique<ConditionalOutcomeState>(rt::SpecLiteral{.outcomes = {"finished", "default"}, .input_keys = {"counter", "limit"}}, rt::Callbacks{{"finished", [](rt::UserData& ud) { return ud.get<int64_t>("counter") >= ud.get<int64_t>("limit"); }}}),
-      {{"default", "INC"}, {"finished", "SHOW"}});
+  seq.emplace<ConditionalOutcomeState>("CHECK", {{"default", "INC"}, {"finished", "SHOW"}}, {},
+      rt::CStringSpec{.outcomes = {"finished", "default"}, .input_keys = {"counter", "limit"}}, rt::CallbacksLiteral{{"finished", [](rt::UserData& ud) { return ud.get<int64_t>("counter") >= ud.get<int64_t>("limit"); }}});
 
-  seq.add("SHOW",
-      std::make_unique<PrintUserdataState>(rt::SpecLiteral{.input_keys = {"counter"}}),
-      {{"succeeded", "done"}});
+  seq.emplace<PrintUserdataState>("SHOW", {{"succeeded", "done"}}, {},
+      rt::CStringSpec{.input_keys = {"counter"}});
 
   int exit_code = rt::runMain(seq, argc, argv);
   return exit_code;

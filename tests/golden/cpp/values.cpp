@@ -12,7 +12,7 @@ namespace rt = smachac::runtime;
 using rt::PrintUserdataState;
 
 int main(int argc, char** argv) {
-  rt::StateMachine values(rt::StateMachineSpec{.outcomes = {"done"}});
+  rt::StateMachine values(rt::CStringSpec{.outcomes = {"done"}});
   values.userdata().set("a_bool", true);
   values.userdata().set("a_float", double{0.1});
   values.userdata().set("a_list", rt::List{rt::Value(int64_t{1}), rt::Value(std::string("two")), rt::Value(double{3.5}), rt::Value(rt::List{rt::Value(std::string("nested")), rt::Value(rt::List{rt::Value(std::string("deeper"))})})});
@@ -29,9 +29,8 @@ int main(int argc, char** argv) {
   values.userdata().set("quote", "say \"it's\"");
   values.userdata().set("unicode", "h\303\251llo \342\234\223");
 
-  values.add("SHOW",
-      std::make_unique<PrintUserdataState>(rt::SpecLiteral{.input_keys = {"an_int", "a_negative", "a_float", "a_whole_float", "a_bool", "nothing", "a_list", "a_map", "code", "forced", "quote", "backslash", "newline", "unicode", "bytes"}}),
-      {{"succeeded", "done"}});
+  values.emplace<PrintUserdataState>("SHOW", {{"succeeded", "done"}}, {},
+      rt::CStringSpec{.input_keys = {"an_int", "a_negative", "a_float", "a_whole_float", "a_bool", "nothing", "a_list", "a_map", "code", "forced", "quote", "backslash", "newline", "unicode", "bytes"}});
 
   int exit_code = rt::runMain(values, argc, argv);
   return exit_code;

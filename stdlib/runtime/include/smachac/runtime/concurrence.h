@@ -24,12 +24,14 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "smachac/runtime/container.h"
@@ -60,6 +62,26 @@ struct ConcurrenceSpec {
   bool early_exit = true;
 };
 
+/// ConcurrenceSpec's literal form, what generated code writes (C strings, nothing to destroy;
+/// see literals.h): `{.outcomes = {"ok"}, .default_outcome = "ok", .outcome_map = {{"ok",
+/// {{"CHILD", "succeeded"}}}}, .early_exit = false}`. No callbacks and no userdata.
+struct CStringConcurrenceSpec {
+  /// A container outcome and the child outcomes it needs.
+  struct Entry {
+    const char* outcome;
+    CStringPairs children;
+  };
+  std::initializer_list<const char*> outcomes{};
+  const char* default_outcome = "";
+  std::initializer_list<Entry> outcome_map{};
+  std::initializer_list<const char*> input_keys{};
+  std::initializer_list<const char*> output_keys{};
+  bool early_exit = true;
+
+  /// Implicit, so that emplace<Concurrence> can be given one.
+  operator ConcurrenceSpec() const;
+};
+
 class Concurrence : public Container {
  public:
   explicit Concurrence(ConcurrenceSpec spec);
@@ -70,6 +92,13 @@ class Concurrence : public Container {
   T& add(std::string_view label, std::unique_ptr<T> state, PairsLiteral remapping = {}) {
     T* added = state.get();  // addState rejects a null state before it is dereferenced
     addState(label, std::move(state), remapping);
+    return *added;
+  }
+  /// Constructs a child from `args` and adds it (StateMachine::emplace without transitions).
+  template <std::derived_from<State> T, class... Args>
+  T& emplace(const char* label, CStringPairs remapping, Args&&... args) {
+    T* added = new T(std::forward<Args>(args)...);
+    addState(label, std::unique_ptr<State>(added), remapping);
     return *added;
   }
   /// The same with a remapping built at run time.
@@ -100,6 +129,7 @@ class Concurrence : public Container {
 
   void addState(std::string label, std::unique_ptr<State> state, Remapping remapping);
   void addState(std::string_view label, std::unique_ptr<State> state, PairsLiteral remapping);
+  void addState(const char* label, std::unique_ptr<State> state, CStringPairs remapping);
   void begin();
   void runAll();
   void runOne(std::size_t index);

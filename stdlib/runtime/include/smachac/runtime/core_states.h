@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "smachac/runtime/callback.h"
+#include "smachac/runtime/callback_literal.h"
 #include "smachac/runtime/state.h"
 #include "smachac/runtime/value.h"
 
@@ -34,7 +35,8 @@ struct KeyedCallback {
   /// The key's position in its state's output keys (placeCallbacks), if known.
   std::size_t position = ~std::size_t{0};
 };
-/// In the order they run: `{{"n", [](rt::UserData& ud) { ... }}, ...}`.
+/// In the order they run: `{{"n", [](rt::UserData& ud) { ... }}, ...}`. Generated code writes
+/// CallbacksLiteral (callback_literal.h), which converts to it.
 using Callbacks = std::vector<KeyedCallback>;
 
 /// Runs `callbacks` in order, writing each result to its key.

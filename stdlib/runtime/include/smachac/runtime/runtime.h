@@ -2,6 +2,7 @@
 #pragma once
 
 #include "smachac/runtime/callback.h"
+#include "smachac/runtime/callback_literal.h"
 #include "smachac/runtime/concurrence.h"
 #include "smachac/runtime/container.h"
 #include "smachac/runtime/core_states.h"

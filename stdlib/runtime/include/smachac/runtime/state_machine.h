@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "smachac/runtime/container.h"
@@ -46,6 +47,18 @@ class StateMachine : public Container {
     addState(label, std::move(state), transitions, remapping);
     return *added;
   }
+  /// Constructs a child from `args` (`T(args...)`) and adds it: what generated code writes,
+  /// `sm.emplace<rt::LogState>("SAY", {{"done", "NEXT"}}, {}, "hi", rt::CStringSpec{})`. The
+  /// label, transitions and remapping are C strings (string literals: nothing to construct at
+  /// the call), and the state is made inside this template, which every statement of the same
+  /// state class and argument types shares: a statement compiles to the call alone, where
+  /// add()'s unique_ptr argument costs each statement its construction and clean-up.
+  template <std::derived_from<State> T, class... Args>
+  T& emplace(const char* label, CStringPairs transitions, CStringPairs remapping, Args&&... args) {
+    T* added = new T(std::forward<Args>(args)...);
+    addState(label, std::unique_ptr<State>(added), transitions, remapping);
+    return *added;
+  }
   /// The same with transitions (and remapping) built at run time.
   template <std::derived_from<State> T>
   T& add(std::string_view label, std::unique_ptr<T> state, Transitions transitions,
@@ -70,6 +83,8 @@ class StateMachine : public Container {
                 Remapping remapping);
   void addState(std::string_view label, std::unique_ptr<State> state, PairsLiteral transitions,
                 PairsLiteral remapping);
+  void addState(const char* label, std::unique_ptr<State> state, CStringPairs transitions,
+                CStringPairs remapping);
   void resolveChild(std::size_t index, std::vector<std::string>& problems);
   std::string runFrom(std::size_t index);
   void enterChild(int index);

@@ -109,7 +109,9 @@ std::pair<const Template*, const SkipPolicy*> EnvironmentImpl::blockRender(std::
   for (size_t probe = 0; probe < kBlockRenderProbes; ++probe) {
     const BlockRender& cached = block_renders_[(home + probe) % kBlockRenderSlots];
     if (!cached.tmpl) break;
-    if (cached.block == block && cached.name == name) return {cached.tmpl, cached.policy};
+    if (sameText(cached.block, block) && sameText(cached.name, name)) {
+      return {cached.tmpl, cached.policy};
+    }
   }
   const std::string* only = intern(block);
   const Template& tmpl = load(name);

@@ -1,6 +1,7 @@
 // String filters: lower, upper, capitalize, title, trim, replace, indent, center, wordwrap,
 // wordcount, truncate, format, string, escape/e, forceescape, safe, tojson.
 #include <algorithm>
+#include <cstring>
 
 #include "backends/tmpl/error.h"
 #include "backends/tmpl/filters/builtins.h"
@@ -113,10 +114,33 @@ void appendIndented(std::string& out, std::string_view input, std::string_view i
   if (cursor.endedWithBreak() && input.back() != '\r') add({});
 }
 
+// The number of "\n" in `s`, 8 bytes a step (std::count took about 2.4 instructions a byte on
+// the final render's bodies): a byte's lane of `lanes` counts its matches, up to 255 words.
+size_t countLineFeeds(std::string_view s) {
+  constexpr uint64_t kOnes = 0x0101010101010101ull;
+  constexpr uint64_t kLow7 = kOnes * 0x7F;
+  constexpr uint64_t kPairs = 0x00FF00FF00FF00FFull;
+  size_t count = 0;
+  size_t i = 0;
+  while (s.size() - i >= 8) {
+    uint64_t lanes = 0;
+    for (size_t k = 0; k < 255 && s.size() - i >= 8; ++k, i += 8) {
+      uint64_t word;
+      std::memcpy(&word, s.data() + i, sizeof word);
+      uint64_t x = word ^ (kOnes * '\n');            // a zero byte where "\n" was
+      uint64_t nonzero = ((x & kLow7) + kLow7) | x;  // high bit: the byte is not zero
+      lanes += (~nonzero >> 7) & kOnes;
+    }
+    uint64_t pairs = (lanes & kPairs) + ((lanes >> 8) & kPairs);  // four 16-bit sums
+    count += static_cast<size_t>((pairs * 0x0001000100010001ull) >> 48);
+  }
+  for (; i < s.size(); ++i) count += s[i] == '\n';
+  return count;
+}
+
 // The size of the result (exact but for the rarer line breaks than "\n").
 size_t indentedSize(std::string_view input, std::string_view indention) {
-  size_t breaks = static_cast<size_t>(std::count(input.begin(), input.end(), '\n'));
-  return input.size() + (breaks + 2) * indention.size();
+  return input.size() + (countLineFeeds(input) + 2) * indention.size();
 }
 
 // indent's arguments; with a string input, which `indent` needs. A width of up to
@@ -139,7 +163,8 @@ IndentCall bindIndent(const Value& in, Args args) {
   } else {
     int64_t width = b.getInt(0, 4);
     auto count = static_cast<size_t>(width);
-    if (width > 0) checkSize(count, "string");
+    // checkSize fails exactly above the limit: called only then (it compares its kind's name).
+    if (width > 0 && count > activeLimits().string_bytes) checkSize(count, "string");
     if (width > 0 && count <= kSpaces.size()) {
       call.view = kSpaces.substr(0, count);
     } else if (width > 0) {

@@ -59,18 +59,13 @@ const Value& ArgBinder::require(size_t index) const {
   return *bound_[index];
 }
 
-int64_t ArgBinder::getInt(size_t index, int64_t fallback) const {
+void ArgBinder::failNotInt(size_t index) const {
   const Value* v = bound_[index];
-  if (!v) return fallback;
-  if (v->isInt() || v->isBool()) return v->integral();
   if (v->isUndefined()) fail(v->undefinedMessage());
   fail("`" + std::string(function_) + "` expects an integer for `" +
        std::string(params_[index].view()) + "`, not `" + std::string(typeName(*v)) + "`");
 }
 
-bool ArgBinder::getBool(size_t index, bool fallback) const {
-  const Value* v = bound_[index];
-  return v ? truthy(*v) : fallback;
-}
+bool ArgBinder::truthyOf(const Value& v) { return truthy(v); }
 
 }  // namespace smachac::tmpl

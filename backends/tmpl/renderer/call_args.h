@@ -130,8 +130,19 @@ class ArgBinder {
   bool has(size_t index) const { return bound_[index] != nullptr; }
   /// Raises Fault unless parameter `index` was given.
   const Value& require(size_t index) const;
-  int64_t getInt(size_t index, int64_t fallback) const;
-  bool getBool(size_t index, bool fallback) const;
+  // Inline for the common cases (absent, an int or a bool): every `indent` reads three.
+  int64_t getInt(size_t index, int64_t fallback) const {
+    const Value* v = bound_[index];
+    if (!v) return fallback;
+    if (v->isInt() || v->isBool()) return v->integral();
+    failNotInt(index);
+  }
+  bool getBool(size_t index, bool fallback) const {
+    const Value* v = bound_[index];
+    if (!v) return fallback;
+    if (v->isBool()) return v->b();
+    return truthyOf(*v);
+  }
 
  private:
   static constexpr size_t kMaxParams = 8;
@@ -143,6 +154,8 @@ class ArgBinder {
     std::string_view view() const { return {data, size}; }
   };
   [[noreturn]] void failKeyword(const std::string& name, bool duplicate) const;
+  [[noreturn]] void failNotInt(size_t index) const;
+  static bool truthyOf(const Value& v);
   std::string_view function_;
   ParamName params_[kMaxParams];
   size_t count_ = 0;

@@ -243,6 +243,31 @@ void printFiltered(Exec& ex, Site& site, const FilterExpr* filter) {
   checkOutputSize(site.out->size());
 }
 
+// `{{ f(...) }}` of a name; a macro renders straight into the output. Out of line: its two
+// argument lists and handlers would make every `{{ name }}` of execPrint pay their frame.
+[[gnu::noinline]] void printCall(Exec& ex, Site& site, const CallExpr* call) {
+  Value fn = eval(ex, site, call->callee);
+  const Object* callee = fn.isObject() ? fn.object() : nullptr;
+  // MacroObject is final: comparing the type is exact, and cheaper than a dynamic_cast.
+  if (callee && typeid(*callee) == typeid(MacroObject)) {
+    auto* macro = static_cast<const MacroObject*>(callee);
+    OwnedArgs args;
+    evalArgs(ex, site, call->args, args);
+    try {
+      return macro->callInto(ex, args.view(), *site.out);
+    } catch (const Fault& fault) {
+      throw ex.tmpl->error(call->pos, fault.message());
+    }
+  }
+  OwnedArgs args;
+  evalArgs(ex, site, call->args, args);
+  try {
+    return writeValue(site, callValue(ex, fn, args.view()));
+  } catch (const Fault& fault) {
+    throw ex.tmpl->error(call->pos, fault.message());
+  }
+}
+
 // `{{ expr }}`; a macro called for printing renders straight into the output, and so does a
 // filter that can.
 void execPrint(Exec& ex, Site& site, const Expr* expr) {
@@ -252,28 +277,7 @@ void execPrint(Exec& ex, Site& site, const Expr* expr) {
   }
   if (expr->kind == ExprKind::Call) {
     auto* call = static_cast<const CallExpr*>(expr);
-    if (call->callee->kind == ExprKind::Name) {
-      Value fn = eval(ex, site, call->callee);
-      const Object* callee = fn.isObject() ? fn.object() : nullptr;
-      // MacroObject is final: comparing the type is exact, and cheaper than a dynamic_cast.
-      if (callee && typeid(*callee) == typeid(MacroObject)) {
-        auto* macro = static_cast<const MacroObject*>(callee);
-        OwnedArgs args;
-        evalArgs(ex, site, call->args, args);
-        try {
-          return macro->callInto(ex, args.view(), *site.out);
-        } catch (const Fault& fault) {
-          throw ex.tmpl->error(call->pos, fault.message());
-        }
-      }
-      OwnedArgs args;
-      evalArgs(ex, site, call->args, args);
-      try {
-        return writeValue(site, callValue(ex, fn, args.view()));
-      } catch (const Fault& fault) {
-        throw ex.tmpl->error(call->pos, fault.message());
-      }
-    }
+    if (call->callee->kind == ExprKind::Name) return printCall(ex, site, call);
   }
   writeValue(site, eval(ex, site, expr));
 }

@@ -2,6 +2,7 @@
 #include "backends/tmpl/values/string_ops.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -249,15 +250,16 @@ struct LineBreakLeads {
 };
 constexpr LineBreakLeads kLineBreakLeads;
 
-// Whether none of the 8 bytes at `p` can start a line break: all are printable ASCII (a byte
-// below 0x20 or above 0x7F sends the scan back to the table, byte by byte).
-bool plainWord(const char* p) {
+// The high bit of each of the 8 bytes at `p` that is below 0x20 or above 0x7F (printable ASCII
+// cannot start a line break), the lowest set bit in the first such byte (bytes after it may be
+// marked wrongly by the borrow); 0 when all 8 are printable ASCII.
+uint64_t nonPlainBytes(const char* p) {
   uint64_t word = 0;
   std::memcpy(&word, p, sizeof word);
   constexpr uint64_t kOnes = 0x0101010101010101ull;
   constexpr uint64_t kHigh = 0x8080808080808080ull;
   uint64_t below_space = (word - kOnes * 0x20) & ~word & kHigh;
-  return ((below_space | word) & kHigh) == 0;
+  return (below_space | word) & kHigh;
 }
 
 // The length of the line break starting at byte `i` of `s`, or 0.
@@ -280,9 +282,16 @@ size_t breakLength(std::string_view s, size_t i) {
 bool LineCursor::next(std::string_view& line) {
   size_t i = start_;
   while (i < s_.size()) {
-    if (s_.size() - i >= 8 && plainWord(s_.data() + i)) {  // most of a line: 8 bytes a step
-      i += 8;
-      continue;
+    if (s_.size() - i >= 8) {  // most of a line: 8 bytes a step, then to its first other byte
+      uint64_t marks = nonPlainBytes(s_.data() + i);
+      if (marks == 0) {
+        i += 8;
+        continue;
+      }
+      // The lowest marked byte comes first in memory on a little-endian machine only.
+      if constexpr (std::endian::native == std::endian::little) {
+        i += static_cast<size_t>(std::countr_zero(marks)) / 8;
+      }
     }
     for (size_t stop = std::min(s_.size(), i + 8); i < stop; ++i) {
       size_t length =

@@ -295,7 +295,7 @@ size_t DictObject::slotOf(const Value& key, size_t hash) const {
 size_t DictObject::slotOfString(std::string_view key, size_t hash) const {
   auto matches = [&](size_t i) {
     const Value& k = entries_[i].first;
-    return hashes_[i] == hash && k.isString() && k.s() == key;
+    return hashes_[i] == hash && k.isString() && sameText(k.s(), key);
   };
   if (table_.empty()) {
     for (size_t i = 0; i < entries_.size(); ++i) {
@@ -342,7 +342,11 @@ void DictObject::setString(std::string_view key, Value value) {
     entries_[i].second = std::move(value);
     return;
   }
-  append(Value::string(std::string(key)), std::move(value), hash);
+  // The key is made in place, carrying the hash just computed: no string moved through
+  // Value::string, and StringObject::hash, asked later of the key (a lookup or a copy by its
+  // Value), is known already.
+  chargeWork(key.size());
+  append(Value::string(new StringObject(key, hash)), std::move(value), hash);
 }
 
 void DictObject::update(const DictObject& from) {
@@ -364,9 +368,13 @@ void DictObject::reserve(size_t count) {
 }
 
 void DictObject::append(Value key, Value value, size_t hash) {
-  if (entries_.capacity() == 0) {  // most dicts are small: skip the 1, 2 steps of growth
-    entries_.reserve(4);
-    hashes_.reserve(4);
+  if (entries_.size() == entries_.capacity()) {
+    // Most dicts are small: room for 4 entries, then 16 (a render context of a dozen keys
+    // grows once, not twice), then doubling.
+    size_t room = entries_.capacity();
+    room = room == 0 ? 4 : room < 16 ? room * 4 : room * 2;
+    entries_.reserve(room);
+    hashes_.reserve(room);
   }
   entries_.emplace_back(std::move(key), std::move(value));
   hashes_.push_back(hash);

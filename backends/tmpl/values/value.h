@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -248,6 +249,8 @@ class Value {
 class StringObject final : public Object {
  public:
   explicit StringObject(std::string text) : text_(std::move(text)) {}
+  /// A copy of `text` whose hash (hashString) the caller has computed already.
+  StringObject(std::string_view text, size_t hash) : text_(text), hash_(hash) {}
   const std::string& text() const { return text_; }
   size_t hash() const;
 
@@ -304,5 +307,27 @@ class DictObject final : public Object {
 };
 
 size_t hashString(std::string_view s);
+
+/// a == b for the short names and keys a render compares by the thousand (a dict key whose hash
+/// matched, a cached block name): words compared inline where `==` calls memcmp.
+inline bool sameText(std::string_view a, std::string_view b) {
+  size_t n = a.size();
+  if (n != b.size()) return false;
+  auto word = [](const char* p) {
+    uint64_t w;
+    std::memcpy(&w, p, sizeof w);
+    return w;
+  };
+  if (n >= 8) {
+    for (size_t i = 0; i + 8 < n; i += 8) {
+      if (word(a.data() + i) != word(b.data() + i)) return false;
+    }
+    return word(a.data() + n - 8) == word(b.data() + n - 8);  // the last 8, overlapping
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (a[i] != b[i]) return false;
+  }
+  return true;
+}
 
 }  // namespace smachac::tmpl

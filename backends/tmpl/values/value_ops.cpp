@@ -319,7 +319,7 @@ bool equals(const Value& a, const Value& b) {
     case Kind::None:
       return true;
     case Kind::String:
-      return a.identity() == b.identity() || a.s() == b.s();
+      return a.identity() == b.identity() || sameText(a.s(), b.s());
     case Kind::List:
     case Kind::Tuple:
       return a.identity() == b.identity() || sequenceEquals(a.list().items(), b.list().items());

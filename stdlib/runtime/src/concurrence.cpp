@@ -41,7 +41,7 @@ CStringConcurrenceSpec::operator ConcurrenceSpec() const {
   StateSpec keys =
       CStringSpec{.outcomes = outcomes, .input_keys = input_keys, .output_keys = output_keys};
   ConcurrenceSpec spec{.outcomes = std::move(keys.outcomes),
-                       .default_outcome = default_outcome != nullptr ? default_outcome : "",
+                       .default_outcome = std::string(cStringText(default_outcome)),
                        .outcome_map = {},
                        .input_keys = std::move(keys.input_keys),
                        .output_keys = std::move(keys.output_keys),
@@ -49,7 +49,7 @@ CStringConcurrenceSpec::operator ConcurrenceSpec() const {
   for (const Entry& entry : outcome_map) {
     // The first of equal outcomes wins, as in OutcomeMap's initializer list.
     auto children = cStringMap(entry.children);
-    spec.outcome_map.try_emplace(entry.outcome != nullptr ? entry.outcome : "", children.begin(),
+    spec.outcome_map.try_emplace(std::string(cStringText(entry.outcome)), children.begin(),
                                  children.end());
   }
   return spec;
@@ -79,7 +79,7 @@ void Concurrence::addState(std::string_view label, std::unique_ptr<State> state,
 
 void Concurrence::addState(const char* label, std::unique_ptr<State> state,
                            CStringPairs remapping) {
-  addChild(std::string(label != nullptr ? label : ""), std::move(state), cStringMap(remapping));
+  addChild(std::string(cStringText(label)), std::move(state), cStringMap(remapping));
 }
 
 // --- checks ----------------------------------------------------------------------------------

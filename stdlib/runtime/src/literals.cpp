@@ -1,6 +1,8 @@
 // The owning forms of the literals generated code writes (literals.h).
 #include "smachac/runtime/literals.h"
 
+#include <utility>
+
 #include "smachac/runtime/state.h"
 #include "smachac/runtime/state_machine.h"
 
@@ -8,9 +10,8 @@ namespace smachac::runtime {
 
 namespace {
 
-// A null C string (from hand-written code) reads as "", not as undefined behaviour.
 std::string_view textOf(std::string_view text) { return text; }
-std::string_view textOf(const char* text) { return text != nullptr ? text : ""; }
+std::string_view textOf(const char* text) { return cStringText(text); }
 
 template <class Key>
 Keys keysOf(std::initializer_list<Key> literal) {
@@ -47,9 +48,10 @@ SpecLiteral::operator StateSpec() const { return specOf(*this); }
 CStringSpec::operator StateSpec() const { return specOf(*this); }
 
 CStringSpec::operator StateMachineSpec() const {
-  return StateMachineSpec{.outcomes = keysOf(outcomes),
-                          .input_keys = keysOf(input_keys),
-                          .output_keys = keysOf(output_keys)};
+  StateSpec keys = specOf(*this);
+  return StateMachineSpec{.outcomes = std::move(keys.outcomes),
+                          .input_keys = std::move(keys.input_keys),
+                          .output_keys = std::move(keys.output_keys)};
 }
 
 }  // namespace smachac::runtime

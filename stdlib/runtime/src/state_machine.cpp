@@ -46,7 +46,7 @@ void StateMachine::addState(std::string_view label, std::unique_ptr<State> state
 
 void StateMachine::addState(const char* label, std::unique_ptr<State> state,
                             CStringPairs transitions, CStringPairs remapping) {
-  addState(std::string(label != nullptr ? label : ""), std::move(state), cStringMap(transitions),
+  addState(std::string(cStringText(label)), std::move(state), cStringMap(transitions),
            cStringMap(remapping));
 }
 

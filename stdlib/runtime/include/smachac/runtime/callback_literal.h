@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "smachac/runtime/callback.h"
+#include "smachac/runtime/literals.h"
 #include "smachac/runtime/value.h"
 
 namespace smachac::runtime {
@@ -42,7 +43,7 @@ class CallbackLiteral {
   }
 
   /// The key (a null key reads as "").
-  std::string_view key() const { return key_ != nullptr ? key_ : ""; }
+  std::string_view key() const { return cStringText(key_); }
   /// The owning form (a copy of the callable).
   Callback callback() const;
 

@@ -26,6 +26,10 @@ namespace smachac::runtime {
 struct StateSpec;
 struct StateMachineSpec;
 
+/// The text of a C string of the C-string forms below; a null one (from hand-written code)
+/// reads as "", not as undefined behaviour.
+inline std::string_view cStringText(const char* text) { return text != nullptr ? text : ""; }
+
 /// One entry of a map of strings: a transition (outcome, target) or a remapping (state key,
 /// parent key).
 struct PairLiteral {

@@ -29,6 +29,7 @@
 
 #include "smachac/runtime/errors.h"
 #include "smachac/runtime/light_mutex.h"
+#include "smachac/runtime/literals.h"
 #include "smachac/runtime/value.h"
 
 namespace smachac::runtime {
@@ -73,7 +74,7 @@ class UserDataStore {
   /// at the call (about a tenth of a millisecond of compile time per line at -O0).
   template <std::same_as<char> Char>
   void set(const Char* key, const Char* text) {
-    setText(key != nullptr ? std::string_view(key) : std::string_view(), text);
+    setText(cStringText(key), text);
   }
   std::optional<Value> find(std::string_view key) const;
   bool contains(std::string_view key) const;

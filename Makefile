@@ -41,8 +41,8 @@ demo: configure
 
 # The stacking experiment as the paper ran it: SMACH Python on a (simulated) Baxter over ROS.
 # Builds only the compiler and the simulation's ROS bridge.
-# The ROS overlay (SMACH, FlexBE, the Baxter SDK) is built by its ctest, which knows where
-# their upstream sources are.
+# The ROS overlay (SMACH, FlexBE, the Baxter SDK, from an installed ROS or the frameworks
+# folder: tools/frameworks) is built by its ctest.
 demo-ros: configure
 	cmake --build $(BUILD) -j $(JOBS) --target smachac smachac_sim_bridge
 	ctest --test-dir $(BUILD) -R '^ros/overlay$$' --output-on-failure

@@ -1,15 +1,13 @@
 """The anchors smachac is compared with, found on this machine, each with the reason when it is
 not usable (the rows that need it print "skipped: <reason>").
 
-  SMACHA      the original Python tool, from smacha/ of the upstream sources the ROS tests
-              use: $SMACHAC_ROS_SOURCES, else the SMACHAC_ROS_SOURCES entry the tests' CMake
-              configuration writes into the main build's CMakeCache.txt ($SMACHAC_TEST_BUILD,
-              default <checkout>/build; `make bench-compare` configures that build first).
-              Its package is copied into a temporary
-              folder and that copy is patched to import `unittest` instead of `unittest2`
-              (Debian 12 has no unittest2); the vendor folder is never written.
-  SMACH       the real smach library (executive_smach/smach/src from the same vendor folder,
-              or an installed one): plain `smach` imports only the standard library.
+  SMACHA      the original Python tool, from the frameworks folder's checkout `smacha`
+              (tools/frameworks: $SMACHAC_FRAMEWORKS, else ~/.cache/smachac/frameworks).
+              Its package is copied into a temporary folder and that copy is patched to
+              import `unittest` instead of `unittest2` (Debian 12 has no unittest2); the
+              checkout is never written.
+  SMACH       the real smach library: an installed ROS's, else executive_smach/smach/src of
+              the same folder; plain `smach` imports only the standard library.
   Jinja2      python3-jinja2, for bench/tmpl_bench_jinja.py's workload.
 All Python runs on Debian's /usr/bin/python3 (the one that sees Debian's packages).
 """
@@ -17,29 +15,28 @@ import importlib.util
 import os
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 PYTHON = "/usr/bin/python3"
 CHECKOUT = Path(__file__).resolve().parent.parent.parent
+sys.path.insert(0, str(CHECKOUT / "tools" / "ros"))
+
+import frameworks  # noqa: E402
+import installed_ros  # noqa: E402
 
 
-def vendor_root():
-    """The folder of upstream sources (holding smacha/ and executive_smach/): the one the
-    ROS tests use. A path that does not exist makes the anchors that need it skip."""
-    sources = os.environ.get("SMACHAC_ROS_SOURCES")
-    if sources:
-        return Path(sources)
-    cache = CHECKOUT / os.environ.get("SMACHAC_TEST_BUILD", "build") / "CMakeCache.txt"
-    if cache.exists():
-        for line in cache.read_text(errors="replace").splitlines():
-            if line.startswith("SMACHAC_ROS_SOURCES:"):
-                return Path(line.split("=", 1)[1])
-    return CHECKOUT / "build" / "no-ros-sources-configured"
+def checkout_path(name):
+    """(the frameworks folder's checkout `name`, None) or (None, why it is not usable)."""
+    found = frameworks.find_checkout(name)
+    if isinstance(found, frameworks.Missing):
+        return None, "%s (tools/frameworks get %s)" % (found.describe(), name)
+    return Path(found.path), None
 
 
 def smacha_root():
-    """SMACHA's repository folder (holding smacha/ and smacha_ros/)."""
-    return vendor_root() / "smacha"
+    """SMACHA's repository folder (holding smacha/ and smacha_ros/), or None."""
+    return checkout_path("smacha")[0]
 
 
 def _python_has(module):
@@ -57,14 +54,12 @@ class Smacha:
     script, run on Debian's python3 with the copy on PYTHONPATH (env())."""
 
     def __init__(self, work_dir):
-        self.root = smacha_root()
+        self.root, missing = checkout_path("smacha")
         self.copy = Path(work_dir) / "smacha_copy"
-        self.why_not = self._why_not()
+        self.why_not = missing or self._why_not()
 
-    def _why_not(self):
-        package = self.root / "smacha"
-        if not (package / "src" / "smacha" / "generator.py").exists():
-            return "SMACHA not found at %s (set $SMACHAC_ROS_SOURCES)" % package
+    @staticmethod
+    def _why_not():
         for module, deb in (("jinja2", "python3-jinja2"), ("ruamel.yaml", "python3-ruamel.yaml")):
             if not _python_has(module):
                 return "%s cannot import %s (apt-get install %s)" % (PYTHON, module, deb)
@@ -106,11 +101,9 @@ class Smach:
     PYTHONPATH (unless Debian's python3 imports an installed smach)."""
 
     def __init__(self):
-        self.src = vendor_root() / "executive_smach" / "smach" / "src"
-        self.installed = _python_has("smach")
-        self.why_not = None
-        if not self.installed and not (self.src / "smach" / "__init__.py").exists():
-            self.why_not = "SMACH not installed and not found at %s" % self.src
+        self.installed = installed_ros.installed_package("smach", "smach") is not None
+        root, self.why_not = (None, None) if self.installed else checkout_path("executive_smach")
+        self.src = root and root / "smach" / "src"
 
     def env(self):
         env = dict(os.environ, PYTHONDONTWRITEBYTECODE="1")

@@ -2,8 +2,9 @@
 """SMACHA's public test corpus compiled with the built-in templates and run on the real SMACH
 (label ros).
 
-  smacha_corpus.py SMACHAC SMACHA_DIR     SMACHA_DIR: SMACHA's sources (smacha/, smacha_ros/);
-                                          the overlay is $SMACHAC_ROS_OVERLAY
+  smacha_corpus.py SMACHAC [SMACHA_DIR]   SMACHA_DIR: SMACHA's sources (smacha/, smacha_ros/),
+                                          by default the frameworks folder's checkout `smacha`
+                                          (tools/frameworks); the overlay is $SMACHAC_ROS_OVERLAY
 
 Every script under SMACHA_DIR/{smacha,smacha_ros}/test/smacha_scripts/<group>/ is compiled
 with `-target=smach`, the built-in templates and what SMACHA's own tests give it (the test
@@ -29,7 +30,8 @@ ROS_TOOLS = os.path.join(os.path.dirname(os.path.dirname(HERE)), "tools", "ros")
 sys.path[:0] = [HERE, ROS_TOOLS]
 
 import corpus_bags  # noqa: E402
-from overlay import Overlay  # noqa: E402
+import frameworks  # noqa: E402
+from overlay import Overlay, unavailable  # noqa: E402
 from report import Report  # noqa: E402
 from ros_session import SKIPPED, run_test  # noqa: E402
 from smach_runs import (Outcome, final_outcome, needs_master, run_in_order,  # noqa: E402
@@ -221,14 +223,21 @@ def measure(scripts, runner):
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (2, 3):
         print(__doc__.strip(), file=sys.stderr)
         return 2
-    smachac, smacha_dir = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    smachac = os.path.abspath(sys.argv[1])
+    if len(sys.argv) == 3:
+        smacha_dir = os.path.abspath(sys.argv[2])
+    else:
+        found = frameworks.find_checkout("smacha")
+        if isinstance(found, frameworks.Missing):
+            print("skip smacha-corpus (%s)" % unavailable([found]))
+            return SKIPPED
+        smacha_dir = found.path
     scripts = corpus(smacha_dir)
     if not scripts:
-        print("skip smacha-corpus (no SMACHA test scripts under %s; $SMACHAC_ROS_SOURCES "
-              "names the folder that holds SMACHA's sources)" % smacha_dir)
+        print("skip smacha-corpus (no SMACHA test scripts under %s)" % smacha_dir)
         return SKIPPED
     overlay = os.environ.get("SMACHAC_ROS_OVERLAY", "")
 

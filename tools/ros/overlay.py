@@ -2,44 +2,47 @@
 """Builds the ROS 1 test overlay: the frameworks Debian does not package, their messages, and
 the packages generated code loads, in one folder.
 
-  overlay.py build DIR [SOURCES]
+  overlay.py build DIR [FRAMEWORKS]
       (re)build the overlay in DIR; prints what it took and what it skipped
 
-Sources come from an installed ROS where it has them (a module that Debian's python3 can
-already import is used as installed), else from a folder of unmodified upstream sources
-(SOURCES, else $SMACHAC_ROS_SOURCES; the ctest ros/overlay names the one beside the project),
-holding executive_smach, flexbe_behavior_engine, baxter_interface, baxter_common,
-gazebo_ros_pkgs and control_msgs as their repositories lay them out. They are copied into DIR/src, patched there
-when they need it, and their .msg/.srv/.action files are turned into Python with genpy.
-DIR/overlay.json records the environment (PYTHONPATH, ROS_PACKAGE_PATH) and which frameworks
-are available, with the reason when one is not; `ros_session.py` reads it.
+Each package comes from an installed ROS where it has it (installed_ros.py: importable by
+Debian's python3 and ROS's own), else from the upstream checkout in the frameworks folder
+(FRAMEWORKS, else frameworks.py's default: $SMACHAC_FRAMEWORKS or ~/.cache/smachac/frameworks),
+used only when it is the commit frameworks.py names. Checkouts are copied into DIR/src,
+patched there when Debian's Python 3 needs it (never in place), and their .msg/.srv/.action
+files are turned into Python with genpy. DIR/overlay.json records the environment
+(PYTHONPATH, ROS_PACKAGE_PATH), which frameworks are available and where each came from, and
+for each one that is not, why and the command that provides it; `ros_session.py` reads it.
 """
 import glob
-import importlib.util
 import json
 import os
 import shutil
 import subprocess
 import sys
 
+import frameworks
+import installed_ros
+
 PYTHON = "/usr/bin/python3"  # Debian's: the only interpreter that sees Debian's rospy
 GENMSG = "/usr/lib/genpy/genmsg_py.py"
 GENSRV = "/usr/lib/genpy/gensrv_py.py"
 GENACTION = "/usr/lib/actionlib_msgs/genaction.py"
 
-# (framework, upstream folder, [(package, path in that folder, python module or None)])
+# (framework, [(checkout of frameworks.py, package, its path in the checkout, has Python
+# code in <path>/src: else it holds messages)])
 FRAMEWORKS = [
-    ("smach", "executive_smach", [("smach", "smach", "smach"),
-                                  ("smach_ros", "smach_ros", "smach_ros"),
-                                  ("smach_msgs", "smach_msgs", None)]),
-    ("flexbe", "flexbe_behavior_engine", [("flexbe_core", "flexbe_core", "flexbe_core"),
-                                          ("flexbe_states", "flexbe_states", "flexbe_states"),
-                                          ("flexbe_testing", "flexbe_testing", "flexbe_testing"),
-                                          ("flexbe_msgs", "flexbe_msgs", None)]),
-    ("baxter", None, [("baxter_interface", "baxter_interface", "baxter_interface"),
-                      ("baxter_core_msgs", "baxter_common/baxter_core_msgs", None),
-                      ("gazebo_msgs", "gazebo_ros_pkgs/gazebo_msgs", None),
-                      ("control_msgs", "control_msgs/control_msgs", None)]),
+    ("smach", [("executive_smach", "smach", "smach", True),
+               ("executive_smach", "smach_ros", "smach_ros", True),
+               ("executive_smach", "smach_msgs", "smach_msgs", False)]),
+    ("flexbe", [("flexbe_behavior_engine", "flexbe_core", "flexbe_core", True),
+                ("flexbe_behavior_engine", "flexbe_states", "flexbe_states", True),
+                ("flexbe_behavior_engine", "flexbe_testing", "flexbe_testing", True),
+                ("flexbe_behavior_engine", "flexbe_msgs", "flexbe_msgs", False)]),
+    ("baxter", [("baxter_interface", "baxter_interface", ".", True),
+                ("baxter_common", "baxter_core_msgs", "baxter_core_msgs", False),
+                ("gazebo_ros_pkgs", "gazebo_msgs", "gazebo_msgs", False),
+                ("control_msgs", "control_msgs", "control_msgs", False)]),
 ]
 
 # Messages the tests' own servers and scripts use (written here, not taken from anywhere).
@@ -69,18 +72,48 @@ def write(path, text):
         f.write(text)
 
 
-def installed(module):
-    return module is not None and importlib.util.find_spec(module) is not None
+def unavailable(missing):
+    """Why a framework is not usable: each checkout it lacks, and the command that gets them."""
+    folders = list(dict.fromkeys(m.checkout.folder for m in missing))
+    whys = list(dict.fromkeys("%s is missing: %s" % (m.checkout.folder, m.why) for m in missing))
+    return "%s; `tools/frameworks get %s` provides %s" % (
+        "; ".join(whys), " ".join(folders), "it" if len(folders) == 1 else "them")
+
+
+def resolve(packages, frameworks_root):
+    """Where each package of a framework comes from: ([(package, checkout path to copy, has
+    code)], [where each came from], [frameworks.Missing for each absent checkout])."""
+    sources, origins, missing = [], [], []
+    for folder, package, path, has_code in packages:
+        installed = installed_ros.installed_package(
+            package, package if has_code else package + ".msg")
+        found = None if installed else frameworks.find_checkout(folder, frameworks_root)
+        if isinstance(found, frameworks.Missing):
+            missing.append(found)
+            continue
+        if found:
+            sources.append((package, os.path.join(found.path, path), has_code))
+        origins.append("installed ROS: " + installed if installed else found.describe())
+    return sources, list(dict.fromkeys(origins)), missing
+
+
+def now_complete(description, frameworks_root=None):
+    """Whether an overlay described so would lack nothing if it were built again now."""
+    if description["problem"]:
+        return False
+    return all(not resolve(packages, frameworks_root)[2] for name, packages in FRAMEWORKS
+               if description["frameworks"].get(name))
 
 
 class Overlay:
-    def __init__(self, root, sources=None):
+    def __init__(self, root, frameworks_root=None):
         self.root = root
-        self.sources = sources or os.environ.get("SMACHAC_ROS_SOURCES")
+        self.frameworks_root = frameworks_root or frameworks.frameworks_folder()
         self.src = os.path.join(root, "src")
         self.gen = os.path.join(root, "gen")
         self.python_path = [self.gen]
         self.frameworks = {}
+        self.origins = {}
 
     def build(self):
         shutil.rmtree(self.root, ignore_errors=True)
@@ -90,8 +123,8 @@ class Overlay:
         if missing_tools:
             return self.finish("message generators missing: " + ", ".join(missing_tools) +
                                " (tools/install-deps installs them)")
-        for framework, folder, packages in FRAMEWORKS:
-            self.frameworks[framework] = self.take_framework(folder, packages)
+        for framework, packages in FRAMEWORKS:
+            self.frameworks[framework] = self.take_framework(framework, packages)
         self.make_package("smacha")  # SMACHA's ROS base template loads the manifest `smacha`
         for relative, text in TEST_MESSAGES.items():
             write(os.path.join(self.src, "smachac_test_msgs", relative), text)
@@ -99,24 +132,21 @@ class Overlay:
         self.generate_messages("smachac_test_msgs", os.path.join(self.src, "smachac_test_msgs"))
         return self.finish(None)
 
-    def take_framework(self, folder, packages):
-        """Copies and builds each package; returns None when usable, else why not."""
-        for package, path, module in packages:
-            if installed(module):
-                continue
-            if not self.sources:
-                return ("%s is not installed and no upstream sources were given "
-                        "($SMACHAC_ROS_SOURCES)" % package)
-            source = os.path.join(self.sources, (folder + "/" if folder else "") + path)
-            if not os.path.isdir(source):
-                return "%s is not installed and its sources are not at %s" % (package, source)
+    def take_framework(self, framework, packages):
+        """Copies and builds each package that no installed ROS has; returns None when the
+        framework is usable, else why not."""
+        sources, origins, missing = resolve(packages, self.frameworks_root)
+        if missing:
+            return unavailable(missing)
+        for package, source, has_code in sources:
             target = os.path.join(self.src, package)
-            shutil.copytree(source, target)
+            shutil.copytree(os.path.normpath(source), target)
             self.patch(package)
-            if module is None:
-                self.generate_messages(package, target)
-            else:
+            if has_code:
                 self.python_path.append(os.path.join(target, "src"))
+            else:
+                self.generate_messages(package, target)
+        self.origins[framework] = origins
         return None
 
     def patch(self, package):
@@ -169,6 +199,7 @@ class Overlay:
             "python_path": self.python_path,
             "package_path": [self.src],
             "frameworks": {name: why for name, why in self.frameworks.items()},
+            "origins": self.origins,
             "problem": problem,
         }
         write(os.path.join(self.root, "overlay.json"), json.dumps(description, indent=1) + "\n")
@@ -185,13 +216,16 @@ def main():
     if len(sys.argv) not in (3, 4) or sys.argv[1] != "build":
         print(__doc__.strip(), file=sys.stderr)
         return 2
-    sources = os.path.abspath(sys.argv[3]) if len(sys.argv) == 4 else None
-    description = Overlay(os.path.abspath(sys.argv[2]), sources).build()
+    folder = os.path.abspath(sys.argv[3]) if len(sys.argv) == 4 else None
+    description = Overlay(os.path.abspath(sys.argv[2]), folder).build()
     if description["problem"]:
         print("overlay: not built: " + description["problem"])
         return 0
     for name, why in description["frameworks"].items():
-        print("overlay: %-7s %s" % (name, "ready" if why is None else "unavailable: " + why))
+        if why is None:
+            print("overlay: %-7s ready: %s" % (name, "; ".join(description["origins"][name])))
+        else:
+            print("overlay: %-7s unavailable: %s" % (name, why))
     return 0
 
 

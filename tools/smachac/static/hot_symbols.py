@@ -63,7 +63,10 @@ def own_costs(profile, total, runs):
 
 def main():
     build = pathlib.Path(sys.argv[1]).resolve()
-    root = sys.argv[2] if len(sys.argv) > 2 else str(anchors.smacha_root())
+    root = sys.argv[2] if len(sys.argv) > 2 else anchors.smacha_root()
+    if root is None:
+        sys.exit("hot_symbols: SMACHA is missing: " + anchors.checkout_path("smacha")[1])
+    root = str(root)
     smachac = str(build / "tools/smachac/smachac")
     total, runs = collections.Counter(), collections.Counter()
     with tempfile.TemporaryDirectory() as tmp:

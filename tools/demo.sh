@@ -6,10 +6,15 @@ set -euo pipefail
 smachac=${1:?usage: tools/demo.sh path/to/smachac}
 cd "$(dirname "$0")/.."
 echo "== smachac lint: every example"
-"$smachac" lint examples/core/*.yml
+# The diagnostics are shown as lint prints them, then counted (a lint error stops the demo).
+diagnostics=$(mktemp)
+trap 'rm -f "$diagnostics"' EXIT
+"$smachac" lint examples/core/*.yml 2> >(tee -a "$diagnostics" >&2)
 # The Baxter scripts' templates are the simulation's C++ ones (sim/templates/cpp).
-"$smachac" lint -target=cpp -I sim/templates/cpp examples/baxter/*.yml
-echo "   $(ls examples/core/*.yml examples/baxter/*.yml | wc -l) scripts, no diagnostics"
+"$smachac" lint -target=cpp -I sim/templates/cpp examples/baxter/*.yml 2> >(tee -a "$diagnostics" >&2)
+wait
+warnings=$(grep -c ': warning: ' "$diagnostics" || true)
+echo "   $(ls examples/core/*.yml examples/baxter/*.yml | wc -l) scripts, no errors, $warnings warning(s)"
 echo
 echo "== smachac -target=ir examples/core/sub_scripts.yml"
 "$smachac" -target=ir examples/core/sub_scripts.yml
